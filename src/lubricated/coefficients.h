@@ -1,0 +1,163 @@
+// Coefficients of one contact model (a pair style type pair, or a wall), their keyword
+// syntax and their validation. Shared by every adapter so that the syntax, the defaults and
+// the error messages are the same in pair_coeff, fix wall/lubrication and LIGGGHTS.
+//
+//   e_d [ncontact N | tcontact t_c] [viscosity mu_f] [activation eps_al | grid dx]
+//       [saturation eps_1] [release eps_2] [integration exact | sampled]
+#pragma once
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace lubricated {
+
+struct Coefficients {
+  double e_dry = -1.0;              // dry restitution e_d, 0 < e_d <= 1
+  double n_contact = 8.0;           // contact duration in steps (used when t_contact == 0)
+  double t_contact = 0.0;           // contact duration in time units (> 0 overrides N_c)
+  double viscosity = 0.0;           // mu_f >= 0; 0 means dry: no lubrication code runs
+  double eps_activation = 0.0;      // eps_al (normalised activation gap)
+  double grid_spacing = 0.0;        // dx: eps_al = 0.75 dx / R instead of a fixed eps_al
+  double eps_saturation = 1e-3;     // eps_1
+  double eps_release = -1e-2;       // eps_2
+  bool exact_contact = true;        // integration exact (contact_step.h) or sampled
+
+  static constexpr int packed_size = 9;
+
+  bool wet() const { return viscosity > 0.0; }
+  double contact_time(double dt) const { return t_contact > 0.0 ? t_contact : n_contact * dt; }
+  double steps_per_contact(double dt) const { return contact_time(dt) / dt; }
+
+  void pack(double *buf) const
+  {
+    const double v[packed_size] = {e_dry,          n_contact,    t_contact,      viscosity,
+                                   eps_activation, grid_spacing, eps_saturation, eps_release,
+                                   exact_contact ? 1.0 : 0.0};
+    for (int i = 0; i < packed_size; ++i) buf[i] = v[i];
+  }
+  void unpack(const double *buf)
+  {
+    e_dry = buf[0];
+    n_contact = buf[1];
+    t_contact = buf[2];
+    viscosity = buf[3];
+    eps_activation = buf[4];
+    grid_spacing = buf[5];
+    eps_saturation = buf[6];
+    eps_release = buf[7];
+    exact_contact = buf[8] != 0.0;
+  }
+};
+
+namespace detail {
+
+inline bool to_number(const std::string &word, double &value)
+{
+  if (word.empty()) return false;
+  char *end = nullptr;
+  value = std::strtod(word.c_str(), &end);
+  return end && *end == '\0' && std::isfinite(value);
+}
+
+inline std::string range_error(const char *name, double value, const char *allowed)
+{
+  return std::string(name) + " = " + std::to_string(value) + " is out of range (allowed: " +
+      allowed + ")";
+}
+
+}    // namespace detail
+
+// Checks every value against its allowed range; returns "" when all are valid.
+inline std::string validate(const Coefficients &c)
+{
+  using detail::range_error;
+  if (!(c.e_dry > 0.0 && c.e_dry <= 1.0)) return range_error("e_d", c.e_dry, "0 < e_d <= 1");
+  if (c.t_contact > 0.0) {
+    if (!std::isfinite(c.t_contact)) return range_error("tcontact", c.t_contact, "t_c > 0");
+  } else if (!(c.n_contact >= 1.0)) {
+    return range_error("ncontact", c.n_contact, "N_c >= 1");
+  }
+  if (!(c.viscosity >= 0.0)) return range_error("viscosity", c.viscosity, "mu_f >= 0");
+  if (!(c.eps_saturation > 0.0))
+    return range_error("saturation", c.eps_saturation, "eps_1 > 0");
+  if (!(c.eps_release < c.eps_saturation))
+    return "release = " + std::to_string(c.eps_release) + " must be below saturation = " +
+        std::to_string(c.eps_saturation) + " (eps_2 < eps_1 required)";
+  if (c.wet()) {
+    if (c.grid_spacing < 0.0) return range_error("grid", c.grid_spacing, "dx > 0");
+    if (c.grid_spacing == 0.0) {
+      if (c.eps_activation == 0.0)
+        return "viscosity > 0 requires the activation (eps_al) or grid (dx) keyword";
+      if (!(c.eps_activation > c.eps_saturation && c.eps_activation <= 1.0))
+        return "activation = " + std::to_string(c.eps_activation) +
+            " is out of range (allowed: saturation eps_1 < eps_al <= 1)";
+    }
+  }
+  return "";
+}
+
+// Parses "e_d keyword value ..." from words[first..]; returns "" on success, else a message
+// naming the offending word. The result is validated.
+inline std::string parse_coefficients(const std::vector<std::string> &words, size_t first,
+                                      Coefficients &c)
+{
+  c = Coefficients();
+  if (words.size() <= first) return "missing e_d (dry restitution coefficient)";
+  if (!detail::to_number(words[first], c.e_dry))
+    return "expected a number for e_d, got '" + words[first] + "'";
+  bool have_n = false, have_t = false, have_al = false, have_dx = false;
+  for (size_t i = first + 1; i < words.size(); i += 2) {
+    const std::string &key = words[i];
+    if (key == "integration") {
+      if (i + 1 >= words.size()) return "missing value for keyword integration";
+      if (words[i + 1] != "exact" && words[i + 1] != "sampled")
+        return "integration must be exact or sampled, got '" + words[i + 1] + "'";
+      c.exact_contact = words[i + 1] == "exact";
+      continue;
+    }
+    double *target = nullptr;
+    if (key == "ncontact") target = &c.n_contact, have_n = true;
+    else if (key == "tcontact") target = &c.t_contact, have_t = true;
+    else if (key == "viscosity") target = &c.viscosity;
+    else if (key == "activation") target = &c.eps_activation, have_al = true;
+    else if (key == "grid") target = &c.grid_spacing, have_dx = true;
+    else if (key == "saturation") target = &c.eps_saturation;
+    else if (key == "release") target = &c.eps_release;
+    else
+      return "unknown keyword '" + key +
+          "' (expected ncontact, tcontact, viscosity, activation, grid, saturation, release or "
+          "integration)";
+    if (i + 1 >= words.size()) return "missing value for keyword " + key;
+    if (!detail::to_number(words[i + 1], *target))
+      return "expected a number for keyword " + key + ", got '" + words[i + 1] + "'";
+  }
+  if (have_n && have_t) return "ncontact and tcontact are mutually exclusive";
+  if (have_al && have_dx) return "activation and grid are mutually exclusive";
+  if (have_t && !(c.t_contact > 0.0)) return detail::range_error("tcontact", c.t_contact, "t_c > 0");
+  if (have_dx && !(c.grid_spacing > 0.0))
+    return detail::range_error("grid", c.grid_spacing, "dx > 0");
+  return validate(c);
+}
+
+// Checks that depend on the time step; returns "" when fine.
+inline std::string validate_time_step(const Coefficients &c, double dt)
+{
+  if (c.t_contact > 0.0 && c.steps_per_contact(dt) < 1.0)
+    return "tcontact = " + std::to_string(c.t_contact) + " is shorter than the time step " +
+        std::to_string(dt) + " (N_c = t_c / dt >= 1 required)";
+  return "";
+}
+
+// Advice that is not an error: the paper finds N_c = 8 the smallest count that keeps e_d.
+inline std::string time_step_warning(const Coefficients &c, double dt)
+{
+  const double n = c.steps_per_contact(dt);
+  if (n < 8.0)
+    return "contact resolved with N_c = " + std::to_string(n) +
+        " steps; the restitution drifts from e_d below N_c = 8";
+  return "";
+}
+
+}    // namespace lubricated

@@ -1,0 +1,79 @@
+// The full normal interaction of one contact: spring-dashpot in overlap plus the lubrication
+// film (MODEL.md sections 1-3). Engines call normal_force() once per neighbour pair or per
+// particle-wall pair; everything else here is set up once per type pair.
+//
+// Conventions (the only place they are written down):
+//   n     unit normal pointing from the partner (particle j or the wall) to particle i;
+//   gap   surface separation h = |x_i - x_j| - R_i - R_j (wall: distance - R_i), < 0 in overlap;
+//   u_n   (v_i - v_j) . n, > 0 when the surfaces separate; overlap rate d_dot = -u_n;
+//         engines pass the velocity they hold at force time (velocity Verlet: mid-step);
+//   m_e   reduced mass m_i m_j / (m_i + m_j); m_i for a wall;
+//   force on i = (contact + lubrication) n, on j the opposite; energy = k d^2 / 2.
+#pragma once
+
+#include "coefficients.h"
+#include "contact_step.h"
+#include "lubrication.h"
+#include "spring_dashpot.h"
+
+namespace lubricated {
+
+struct NormalModel {
+  SpringDashpot contact;
+  ContactStep step;           // exact integration over one step (contact_step.h)
+  bool exact = true;          // false: sample F_s once per step (for comparison only)
+  Lubrication lubrication;
+
+  // Whether the pair needs evaluating at gap g with normal velocity u (cheap pre-test).
+  bool acts(double gap, double radius, double u) const
+  {
+    return gap < 0.0 || gap < reach(radius) || (exact && contact_possible(gap, u, step.dt));
+  }
+
+  // Largest gap (length) at which the model acts, for a contact of lubrication radius R.
+  double reach(double radius) const
+  {
+    return lubrication.active() ? lubrication.activation_for(radius) * radius : 0.0;
+  }
+};
+
+inline NormalModel make_normal_model(const Coefficients &c, Partner partner, double dt)
+{
+  NormalModel m;
+  m.contact = spring_dashpot_from_restitution(c.e_dry, c.contact_time(dt));
+  m.step = make_contact_step(m.contact, dt);
+  m.exact = c.exact_contact;
+  m.lubrication = make_lubrication(partner, c.viscosity, c.eps_activation, c.grid_spacing,
+                                   c.eps_saturation, c.eps_release);
+  return m;
+}
+
+struct NormalForce {
+  double contact = 0.0;        // spring-dashpot part, along n
+  double lubrication = 0.0;    // film part, along n
+  double energy = 0.0;         // elastic energy k d^2 / 2 of the spring
+  double total() const { return contact + lubrication; }
+};
+
+inline NormalForce normal_force(const NormalModel &m, double gap, double radius,
+                                double reduced_mass, double u_n)
+{
+  NormalForce f;
+  if (gap < 0.0) {
+    const double overlap = -gap;
+    const double k = reduced_mass * m.contact.stiffness_per_mass;
+    if (!m.exact) f.contact = k * overlap - reduced_mass * m.contact.damping_per_mass * u_n;
+    f.energy = 0.5 * k * overlap * overlap;
+  }
+  if (m.exact && contact_possible(gap, u_n, m.step.dt))
+    f.contact = reduced_mass * contact_acceleration(m.step, gap, u_n);
+  if (m.lubrication.active()) f.lubrication = -m.lubrication.damping(gap / radius, radius) * u_n;
+  return f;
+}
+
+inline double reduced_mass(double m_i, double m_j)
+{
+  return m_i * m_j / (m_i + m_j);
+}
+
+}    // namespace lubricated

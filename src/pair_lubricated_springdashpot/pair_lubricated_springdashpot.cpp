@@ -1,0 +1,307 @@
+/* ----------------------------------------------------------------------
+   pair_style lubricated/springdashpot (see doc/pair_lubricated_springdashpot.rst)
+------------------------------------------------------------------------- */
+
+#include "pair_lubricated_springdashpot.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "update.h"
+#include "utils.h"
+
+#include <cmath>
+#include <set>
+#include <string>
+
+using namespace LAMMPS_NS;
+namespace lub = lubricated;
+
+static constexpr const char *STYLE = "Pair style lubricated/springdashpot";
+
+PairLubricatedSpringDashpot::PairLubricatedSpringDashpot(LAMMPS *lmp) : Pair(lmp)
+{
+  single_enable = 1;
+  single_extra = 3;    // contact force, lubrication force, normalised gap
+  svector = new double[single_extra];
+  finitecutflag = 1;
+  restartinfo = 1;
+}
+
+PairLubricatedSpringDashpot::~PairLubricatedSpringDashpot()
+{
+  delete[] svector;
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+  }
+}
+
+void PairLubricatedSpringDashpot::allocate()
+{
+  allocated = 1;
+  const int n = ntypes_alloc = atom->ntypes;
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++) setflag[i][j] = 0;
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  coeffs.assign((n + 1) * (n + 1), lub::Coefficients());
+  models.assign((n + 1) * (n + 1), lub::NormalModel());
+  maxrad.assign(n + 1, 0.0);
+}
+
+void PairLubricatedSpringDashpot::settings(int narg, char **arg)
+{
+  if (narg > 0)
+    error->all(FLERR, "{} takes no arguments, got '{}' (coefficients go in pair_coeff)", STYLE,
+               arg[0]);
+}
+
+// pair_coeff I J e_d [ncontact N | tcontact t_c] [viscosity mu_f] [activation eps_al | grid dx]
+//                    [saturation eps_1] [release eps_2]
+void PairLubricatedSpringDashpot::coeff(int narg, char **arg)
+{
+  if (narg < 3) error->all(FLERR, "{}: pair_coeff needs I J e_d [keyword value ...]", STYLE);
+  if (!allocated) allocate();
+
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+
+  std::vector<std::string> words(arg + 2, arg + narg);
+  lub::Coefficients c;
+  const std::string problem = lub::parse_coefficients(words, 0, c);
+  if (!problem.empty()) error->all(FLERR, "{} pair_coeff {} {}: {}", STYLE, arg[0], arg[1], problem);
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++) {
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      coeffs[index(i, j)] = c;
+      coeffs[index(j, i)] = c;
+      setflag[i][j] = 1;
+      count++;
+    }
+  }
+  if (count == 0) error->all(FLERR, "{}: incorrect atom types in pair_coeff {} {}", STYLE, arg[0], arg[1]);
+}
+
+void PairLubricatedSpringDashpot::init_style()
+{
+  if (!atom->radius_flag || !atom->rmass_flag)
+    error->all(FLERR, "{} requires atom_style sphere (per-atom radius and rmass)", STYLE);
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "{} requires ghost atoms to store velocity: use comm_modify vel yes", STYLE);
+
+  const int n = atom->ntypes;
+  any_wet = false;
+  std::set<std::string> advice;
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++) {
+      if (!setflag[i][j]) continue;
+      const lub::Coefficients &c = coeffs[index(i, j)];
+      const std::string problem = lub::validate_time_step(c, update->dt);
+      if (!problem.empty()) error->all(FLERR, "{} types {} {}: {}", STYLE, i, j, problem);
+      advice.insert(lub::time_step_warning(c, update->dt));
+      any_wet = any_wet || c.wet();
+    }
+  if (comm->me == 0)
+    for (const auto &msg : advice)
+      if (!msg.empty()) error->warning(FLERR, "{}: {}", STYLE, msg);
+
+  // A dry model acts only in contact: a radius-based list is enough and cheapest. The film
+  // acts beyond contact, where radius-based lists lose pairs on rebuild (LAMMPS PR #4685),
+  // so a wet model asks for a list with per-type cutoffs that cover the whole film.
+  neighbor->add_request(this, any_wet ? NeighConst::REQ_DEFAULT : NeighConst::REQ_SIZE);
+
+  // Largest radius per type: atoms present now, and those fix pour/deposit may insert.
+  std::vector<double> local(n + 1, 0.0);
+  for (int i = 0; i < atom->nlocal; i++)
+    local[atom->type[i]] = MAX(local[atom->type[i]], atom->radius[i]);
+  MPI_Allreduce(local.data(), maxrad.data(), n + 1, MPI_DOUBLE, MPI_MAX, world);
+  for (auto &ifix : modify->get_fix_list())
+    for (int t = 1; t <= n; t++) {
+      int itype = t;
+      auto r = static_cast<double *>(ifix->extract("radius", itype));
+      if (r && *r > maxrad[t]) maxrad[t] = *r;
+    }
+}
+
+double PairLubricatedSpringDashpot::init_one(int i, int j)
+{
+  if (!setflag[i][j])
+    error->all(FLERR, "{}: coefficients for atom types {} {} are not set (no mixing)", STYLE, i, j);
+  const lub::Coefficients &c = coeffs[index(i, j)];
+  models[index(i, j)] = models[index(j, i)] =
+      lub::make_normal_model(c, lub::Partner::particle, update->dt);
+
+  // The film of the largest pair of these types reaches farthest.
+  double reach = 0.0;
+  if (c.wet() && maxrad[i] > 0.0 && maxrad[j] > 0.0)
+    reach = models[index(i, j)].reach(lub::lubrication_radius_pair(maxrad[i], maxrad[j]));
+  return maxrad[i] + maxrad[j] + reach;
+}
+
+void PairLubricatedSpringDashpot::update_models()
+{
+  const int n = atom->ntypes;
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++)
+      if (setflag[i][j])
+        models[index(i, j)] = models[index(j, i)] =
+            lub::make_normal_model(coeffs[index(i, j)], lub::Partner::particle, update->dt);
+}
+
+// k = m_e (pi^2 + ln^2 e_d) / (N_c dt)^2 follows the time step when N_c is given.
+void PairLubricatedSpringDashpot::reset_dt()
+{
+  update_models();
+}
+
+void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  if (any_wet) eval<true>();
+  else eval<false>();
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+template <bool WET> void PairLubricatedSpringDashpot::eval()
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  const double *radius = atom->radius;
+  const double *rmass = atom->rmass;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const double dt = update->dt;
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
+    const double radi = radius[i];
+    const int itype = type[i];
+    const int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double delx = xi - x[j][0];
+      const double dely = yi - x[j][1];
+      const double delz = zi - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      const double radsum = radi + radius[j];
+      const lub::NormalModel &model = models[index(itype, type[j])];
+      const double dvx = v[i][0] - v[j][0];
+      const double dvy = v[i][1] - v[j][1];
+      const double dvz = v[i][2] - v[j][2];
+
+      double lub_radius = 0.0, reach = 0.0;
+      if (WET && model.lubrication.active()) {
+        lub_radius = lub::lubrication_radius_pair(radi, radius[j]);
+        reach = model.reach(lub_radius);
+      }
+      const double outer = radsum + reach;
+      if (rsq >= outer * outer) {
+        // Apart and out of the film: only a contact starting within a step can act,
+        // gap < |u_n| dt, i.e. rsq - |dv.del| dt < radsum r (tested without a sqrt).
+        if (!model.exact) continue;
+        const double s = rsq - std::fabs(dvx * delx + dvy * dely + dvz * delz) * dt;
+        if (s > 0.0 && s * s >= radsum * radsum * rsq) continue;
+      }
+      if (rsq == 0.0) continue;    // coincident centres: no normal direction is defined
+
+      const double r = std::sqrt(rsq);
+      const double rinv = 1.0 / r;
+      const double u_n = (dvx * delx + dvy * dely + dvz * delz) * rinv;
+      const double m_e = lub::reduced_mass(rmass[i], rmass[j]);
+      const lub::NormalForce fn = lub::normal_force(model, r - radsum, lub_radius, m_e, u_n);
+
+      const double fpair = fn.total() * rinv;
+      f[i][0] += delx * fpair;
+      f[i][1] += dely * fpair;
+      f[i][2] += delz * fpair;
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= delx * fpair;
+        f[j][1] -= dely * fpair;
+        f[j][2] -= delz * fpair;
+      }
+      if (evflag) ev_tally(i, j, nlocal, newton_pair, fn.energy, 0.0, fpair, delx, dely, delz);
+    }
+  }
+}
+
+double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, double rsq,
+                                           double /*factor_coul*/, double /*factor_lj*/,
+                                           double &fforce)
+{
+  fforce = 0.0;
+  svector[0] = svector[1] = 0.0;
+  const double radi = atom->radius[i], radj = atom->radius[j];
+  const double radsum = radi + radj;
+  const double r = std::sqrt(rsq);
+  const double lub_radius = lub::lubrication_radius_pair(radi, radj);
+  svector[2] = (r - radsum) / lub_radius;
+  const lub::NormalModel &model = models[index(itype, jtype)];
+  if (rsq == 0.0) return 0.0;
+
+  double **x = atom->x, **v = atom->v;
+  double u_n = 0.0;
+  for (int d = 0; d < 3; d++) u_n += (v[i][d] - v[j][d]) * (x[i][d] - x[j][d]);
+  u_n /= r;
+  if (!model.acts(r - radsum, lub_radius, u_n)) return 0.0;
+  const double m_e = lub::reduced_mass(atom->rmass[i], atom->rmass[j]);
+  const lub::NormalForce fn = lub::normal_force(model, r - radsum, lub_radius, m_e, u_n);
+  fforce = fn.total() / r;
+  svector[0] = fn.contact;
+  svector[1] = fn.lubrication;
+  return fn.energy;
+}
+
+void PairLubricatedSpringDashpot::write_restart(FILE *fp)
+{
+  double buf[lub::Coefficients::packed_size];
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (!setflag[i][j]) continue;
+      coeffs[index(i, j)].pack(buf);
+      fwrite(buf, sizeof(double), lub::Coefficients::packed_size, fp);
+    }
+}
+
+void PairLubricatedSpringDashpot::read_restart(FILE *fp)
+{
+  allocate();
+  const int me = comm->me;
+  double buf[lub::Coefficients::packed_size];
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (!setflag[i][j]) continue;
+      if (me == 0)
+        utils::sfread(FLERR, buf, sizeof(double), lub::Coefficients::packed_size, fp, nullptr,
+                      error);
+      MPI_Bcast(buf, lub::Coefficients::packed_size, MPI_DOUBLE, 0, world);
+      coeffs[index(i, j)].unpack(buf);
+      coeffs[index(j, i)].unpack(buf);
+    }
+}
+
+double PairLubricatedSpringDashpot::memory_usage()
+{
+  return Pair::memory_usage() + coeffs.size() * sizeof(lub::Coefficients) +
+      models.size() * sizeof(lub::NormalModel);
+}

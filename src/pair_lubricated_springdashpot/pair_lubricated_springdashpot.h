@@ -1,0 +1,49 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   pair_style lubricated/springdashpot: the collision model of Brandle de Motta et al.
+   (CFM 2011) for finite-size spheres. A thin adapter: neighbour loop, ghost data,
+   tallies and restart; the physics lives in src/lubricated/.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_PAIR_LUBRICATED_SPRINGDASHPOT_H
+#define LMP_PAIR_LUBRICATED_SPRINGDASHPOT_H
+
+#include "pair.h"
+
+#include "lubricated/normal_model.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class PairLubricatedSpringDashpot : public Pair {
+ public:
+  PairLubricatedSpringDashpot(class LAMMPS *);
+  ~PairLubricatedSpringDashpot() override;
+
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void reset_dt() override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  double single(int, int, int, int, double, double, double, double &) override;
+  double memory_usage() override;
+
+ protected:
+  std::vector<lubricated::Coefficients> coeffs;    // per type pair, (ntypes+1)^2
+  std::vector<lubricated::NormalModel> models;     // derived from coeffs and dt
+  std::vector<double> maxrad;                      // largest radius per type
+  bool any_wet = false;
+
+  void allocate();
+  int ntypes_alloc = 0;
+  int index(int itype, int jtype) const { return itype * (ntypes_alloc + 1) + jtype; }
+  void update_models();
+  template <bool WET> void eval();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

