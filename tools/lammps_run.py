@@ -44,7 +44,8 @@ class LammpsError(RuntimeError):
         self.log = log
 
 
-def run(script, workdir, variables=None, nprocs=1, name="in.run", timeout=600, check=True):
+def run(script, workdir, variables=None, nprocs=1, name="in.run", timeout=600, check=True,
+        env=None):
     """Write script to workdir/name, run it, return (results dict, log text).
 
     The script may use ${plugin} for the plugin path. With check=True a failing run raises
@@ -58,7 +59,9 @@ def run(script, workdir, variables=None, nprocs=1, name="in.run", timeout=600, c
                                   "-nocite", "-var", "plugin", str(PLUGIN)]
     for key, value in (variables or {}).items():
         args += ["-var", key, str(value)]
-    proc = subprocess.run(args, cwd=workdir, env=lmp_env(), capture_output=True, text=True,
+    run_env = lmp_env()
+    run_env.update(env or {})
+    proc = subprocess.run(args, cwd=workdir, env=run_env, capture_output=True, text=True,
                           timeout=timeout)
     text = log.read_text() if log.exists() else ""
     text += proc.stdout + proc.stderr

@@ -1,0 +1,50 @@
+"""Shared fixtures for the tests that run LAMMPS with the plugin."""
+import pathlib
+import shutil
+import sys
+
+import pytest
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "tools"))
+
+import lammps_run  # noqa: E402
+
+SCRATCH = ROOT / "build" / "test-scratch"
+
+
+@pytest.fixture(scope="session", autouse=True)
+def plugin_built():
+    if not lammps_run.PLUGIN.exists():
+        pytest.exit(f"{lammps_run.PLUGIN} is missing: run 'make build' first", returncode=2)
+
+
+@pytest.fixture
+def scratch(request):
+    """A scratch directory under build/, removed again when the test passes."""
+    path = SCRATCH / request.node.name.replace("[", "_").replace("]", "").replace("/", "_")
+    shutil.rmtree(path, ignore_errors=True)
+    path.mkdir(parents=True)
+    yield path
+    if not getattr(request.node, "failed", False):
+        shutil.rmtree(path, ignore_errors=True)
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_makereport(item, call):
+    outcome = yield
+    report = outcome.get_result()
+    if report.when == "call" and report.failed:
+        item.failed = True
+
+
+@pytest.fixture
+def lmp(scratch):
+    """lmp(script, **variables) -> results dict; lmp.log is the last log text."""
+    def run(script, nprocs=1, name="in.run", check=True, env=None, **variables):
+        results, log = lammps_run.run(script, scratch, variables, nprocs=nprocs, name=name,
+                                      check=check, env=env)
+        run.log = log
+        return results
+    run.dir = scratch
+    return run

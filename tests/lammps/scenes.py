@@ -1,0 +1,108 @@
+"""Input-script builders for the impact scenes the tests and the demo share.
+
+Units: SI. A steel-like sphere (rho_p = 8000 kg/m^3) of radius R = 1 mm hits a wall or
+another sphere head-on at U = 0.1 m/s; no gravity, so the rebound speed measured once the
+sphere has left the film is the restitution velocity. The time step is given in units of
+R/U (the documented wet setting is dt = 0.005 R/U with e_d = 0.9, N_c = 8 and eps_al = 0.75 dx/R at
+R/dx = 8, i.e. eps_al = 0.09375).
+"""
+import math
+
+RHO = 8000.0
+R = 1.0e-3
+U = 0.1
+EPS_AL = 0.75 / 8.0
+WET_DT = 0.005    # in R/U
+
+
+def viscosity_for_stokes(st, radius=R, speed=U, rho=RHO):
+    """St = (2/9) rho_p R u / mu_f  (MODEL.md section 5)."""
+    return 2.0 / 9.0 * rho * radius * speed / st
+
+
+def legendre(st):
+    return math.exp(-35.0 / st)
+
+
+HEADER = """plugin load ${plugin}
+units si
+atom_style sphere
+atom_modify map array
+boundary p p f
+comm_modify vel yes
+newton ${newton}
+"""
+
+
+def wall_bounce(e_dry, dt_ru=WET_DT, mu=0.0, ncontact=8, extra="", gap0=0.2137, steps=None):
+    """A sphere starting gap0*R above a zplane wall, moving down at U.
+
+    Prints RESULT e (rebound/impact speed), RESULT contact_steps (steps with overlap).
+    """
+    dt = dt_ru * R / U
+    travel = (2.0 * gap0 + 2.0 * EPS_AL + 0.2) * R / U     # in, contact, out of the film
+    steps = steps or int(math.ceil(travel / dt)) + 8 * ncontact
+    wet = f"viscosity {mu} activation {EPS_AL}" if mu > 0 else ""
+    return HEADER.replace("${newton}", "on") + f"""
+region box block -0.01 0.01 -0.01 0.01 0 0.02
+create_box 1 box
+create_atoms 1 single 0 0 {R * (1 + gap0)}
+set atom 1 diameter {2 * R} density {RHO}
+velocity all set 0 0 {-U}
+pair_style lubricated/springdashpot
+pair_coeff * * 0.9
+fix wall all wall/lubrication {e_dry} ncontact {ncontact} {wet} {extra} zplane 0.0 NULL
+fix nve all nve/sphere
+timestep {dt}
+variable overlap equal "z[1] < {R}"
+variable contact_steps equal 0
+fix count all ave/time 1 1 1 v_overlap mode scalar ave running
+thermo 0
+run {steps}
+variable n equal f_count*{steps + 1}
+print "RESULT e $(vz[1]/{U}:%.15g)"
+print "RESULT contact_steps $(v_n:%.6f)"
+"""
+
+
+def pair_bounce(e_dry, mass_ratio=1.0, dt_ru=WET_DT, mu=0.0, ncontact=8, gap0=0.2137, newton="on",
+                radius_ratio=1.0, x_offset=0.0, skin=0.5 * R):
+    """Two spheres approaching head-on along x at relative speed U (centre-of-mass frame).
+
+    Sphere 2 has radius radius_ratio*R and density such that m2/m1 = mass_ratio.
+    Prints RESULT e (relative separation / approach speed) and RESULT contact_steps.
+    """
+    dt = dt_ru * R / U
+    r2 = radius_ratio * R
+    rho2 = RHO * mass_ratio / radius_ratio**3
+    m1, m2 = 1.0, mass_ratio
+    v1, v2 = U * m2 / (m1 + m2), -U * m1 / (m1 + m2)
+    x1 = x_offset - R - 0.5 * gap0 * R
+    x2 = x_offset + r2 + 0.5 * gap0 * R
+    travel = (2.0 * gap0 + 4.0 * EPS_AL + 0.2) * R / U
+    steps = int(math.ceil(travel / dt)) + 8 * ncontact
+    wet = f"viscosity {mu} activation {EPS_AL}" if mu > 0 else ""
+    return HEADER.replace("${newton}", newton) + f"""
+boundary p p p
+region box block -0.01 0.01 -0.01 0.01 -0.01 0.01
+create_box 1 box
+create_atoms 1 single {x1} 0 0
+create_atoms 1 single {x2} 0 0
+set atom 1 diameter {2 * R} density {RHO}
+set atom 2 diameter {2 * r2} density {rho2}
+velocity all set 0 0 0
+set atom 1 vx {v1}
+set atom 2 vx {v2}
+pair_style lubricated/springdashpot
+pair_coeff * * {e_dry} ncontact {ncontact} {wet}
+fix nve all nve/sphere
+timestep {dt}
+variable overlap equal "(x[2]-x[1]) < {R + r2}"
+fix count all ave/time 1 1 1 v_overlap mode scalar ave running
+thermo 0
+neighbor {skin} bin
+run {steps}
+variable n equal f_count*{steps + 1}
+print "RESULT e $((vx[2]-vx[1])/{U}:%.15g)"
+print "RESULT contact_steps $(v_n:%.6f)"
+"""

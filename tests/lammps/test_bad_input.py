@@ -1,0 +1,81 @@
+"""Every bad input ends in a LAMMPS ERROR that names the parameter (and its allowed range)."""
+import pytest
+
+import scenes
+
+BASE = """plugin load ${plugin}
+units si
+atom_style ATOMSTYLE
+boundary p p f
+comm_modify vel yes
+region box block -0.01 0.01 -0.01 0.01 0 0.02
+create_box 2 box
+create_atoms 1 single 0 0 0.005
+ATOMSET
+pair_style lubricated/springdashpot
+PAIRCOEFF
+FIX
+timestep 1e-5
+run 1
+"""
+
+
+def script(pair_coeff="pair_coeff * * 0.9", fix="", atom_style="sphere", extra_before_run=""):
+    atom_set = "set atom 1 diameter 0.002 density 8000" if atom_style == "sphere" else "mass * 1.0"
+    text = (BASE.replace("ATOMSTYLE", atom_style).replace("ATOMSET", atom_set)
+            .replace("PAIRCOEFF", pair_coeff).replace("FIX", fix))
+    return text.replace("timestep 1e-5", "timestep 1e-5\n" + extra_before_run)
+
+
+CASES = {
+    "e_d_zero": (script("pair_coeff * * 0"), ["e_d = 0", "0 < e_d <= 1"]),
+    "e_d_above_one": (script("pair_coeff * * 1.5"), ["e_d = 1.5", "0 < e_d <= 1"]),
+    "ncontact_below_one": (script("pair_coeff * * 0.9 ncontact 0.5"), ["ncontact = 0.5", "N_c >= 1"]),
+    "negative_viscosity": (script("pair_coeff * * 0.9 viscosity -1e-3 activation 0.1"),
+                           ["viscosity = -0.001", "mu_f >= 0"]),
+    "eps1_not_above_eps2": (script("pair_coeff * * 0.9 saturation 1e-3 release 2e-3"),
+                            ["release = 0.002", "eps_2 < eps_1"]),
+    "wet_without_activation": (script("pair_coeff * * 0.9 viscosity 1e-3"), ["activation", "grid"]),
+    "unknown_pair_keyword": (script("pair_coeff * * 0.9 viscosty 1e-3"), ["unknown keyword 'viscosty'"]),
+    "missing_coefficients": (script("pair_coeff 1 1 0.9"), ["All pair coeffs are not set", "1      2: is not set"]),
+    "pair_style_arguments": (script().replace("pair_style lubricated/springdashpot",
+                                              "pair_style lubricated/springdashpot 0.9"),
+                             ["takes no arguments"]),
+    "wrong_atom_style": (script(atom_style="atomic"), ["requires atom_style sphere"]),
+    "no_ghost_velocity": (script().replace("comm_modify vel yes", ""), ["comm_modify vel yes"]),
+    "tcontact_below_dt": (script("pair_coeff * * 0.9 tcontact 1e-6"), ["tcontact", "N_c = t_c / dt >= 1"]),
+    "wall_unknown_keyword": (script(fix="fix w all wall/lubrication 0.9 zplane 0.0 NULL wiggle z 1 1"),
+                             ["unknown keyword 'wiggle'"]),
+    "wall_bad_keyword_before_plane": (script(fix="fix w all wall/lubrication 0.9 damping 3 zplane 0.0 NULL"),
+                                      ["Fix wall/lubrication", "unknown keyword 'damping'"]),
+    "wall_e_d": (script(fix="fix w all wall/lubrication 0 zplane 0.0 NULL"), ["e_d = 0", "0 < e_d <= 1"]),
+    "wall_viscosity": (script(fix="fix w all wall/lubrication 0.9 viscosity -2 grid 1e-4 zplane 0.0 NULL"),
+                       ["viscosity = -2", "mu_f >= 0"]),
+    "wall_missing_plane": (script(fix="fix w all wall/lubrication 0.9 ncontact 8"), ["missing wall style"]),
+    "wall_both_null": (script(fix="fix w all wall/lubrication 0.9 zplane NULL NULL"), ["both walls are NULL"]),
+    "wall_lo_above_hi": (script(fix="fix w all wall/lubrication 0.9 zplane 0.02 0.01"), ["must be below hi"]),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_error_names_the_parameter(lmp, case):
+    text, expected = CASES[case]
+    lmp(text, check=False)
+    lines = lmp.log.splitlines()
+    first = next((k for k, line in enumerate(lines) if "ERROR" in line), None)
+    assert first is not None, f"no ERROR for {case}:\n{lmp.log[-1500:]}"
+    message = "\n".join(lines[first:first + 5])    # LAMMPS may list details below the line
+    for fragment in expected:
+        assert fragment in message, message
+    assert "Segmentation" not in lmp.log
+
+
+def test_good_input_runs(lmp):
+    """The base script itself is valid, so the errors above come from the one bad value."""
+    lmp(script("pair_coeff * * 0.9 ncontact 8 viscosity 1e-3 activation 0.1",
+               fix="fix w all wall/lubrication 0.9 zplane 0.0 NULL"))
+
+
+def test_few_contact_steps_warn(lmp):
+    lmp(script("pair_coeff * * 0.9 ncontact 4"))
+    assert "WARNING" in lmp.log and "N_c = 4" in lmp.log

@@ -1,0 +1,89 @@
+"""How the styles sit in LAMMPS: plugin autoload, energy and single() for compute pair/local,
+and neighbor lists that keep every pair inside the film whatever the skin."""
+import math
+
+import pytest
+
+import scenes
+import lammps_run
+
+
+def test_autoload_through_lammps_plugin_path(lmp):
+    script = scenes.wall_bounce(0.5, dt_ru=0.005).replace("plugin load ${plugin}\n", "")
+    result = lmp(script, env={"LAMMPS_PLUGIN_PATH": str(lammps_run.PLUGIN.parent)})
+    assert "Loaded 1 plugins from" in lmp.log
+    assert result["e"] == pytest.approx(0.5, rel=1e-6)
+
+
+PAIR_AT_REST = scenes.HEADER.replace("${newton}", "on") + """
+boundary p p p
+region box block -0.01 0.01 -0.01 0.01 -0.01 0.01
+create_box 1 box
+create_atoms 1 single 0 0 0
+create_atoms 1 single {x2} 0 0
+set atom 1 diameter 0.002 density 8000
+set atom 2 diameter {d2} density 8000
+pair_style lubricated/springdashpot
+pair_coeff * * 0.5 ncontact 8 viscosity 1e-3 activation 0.09375
+timestep 1e-5
+compute pl all pair/local dist p1 p2 p3 cutoff type
+compute sum all reduce sum c_pl[2] c_pl[3] c_pl[4] inputs local
+fix nve all nve/sphere
+run 0
+print "RESULT pe $(pe:%.15g)"
+print "RESULT fx1 $(fx[1]:%.15g)"
+print "RESULT single $(c_sum[1]:%.15g) $(c_sum[2]:%.15g) $(c_sum[3]:%.15g)"
+"""
+
+
+def pair_at_rest(x2, d2):
+    return PAIR_AT_REST.replace("{x2}", repr(x2)).replace("{d2}", repr(d2))
+
+
+def test_energy_and_single_in_overlap(lmp):
+    """Two spheres at rest overlapping by d: pe = k d^2 / 2 with the paper's k, single()
+    gives the force applied and no lubrication (at rest u_n = 0), and eps = -d / R."""
+    d = 1e-5
+    result = lmp(pair_at_rest(0.002 - d, 0.002))
+    mass = 8000 * 4.0 / 3.0 * math.pi * 1e-9
+    m_e = mass / 2.0
+    t_c = 8e-5
+    k = m_e * (math.pi ** 2 + math.log(0.5) ** 2) / t_c ** 2
+    assert result["pe"] == pytest.approx(0.5 * k * d * d, rel=1e-9)
+    contact, lubrication, eps = result["single"]
+    assert contact == pytest.approx(-result["fx1"], rel=1e-9)      # sphere 1 is pushed to -x
+    # In sustained contact the step-exact force is k' d - c' u_n (contact_step.h).
+    dt = 1e-5
+    decay, omega = -math.log(0.5) / t_c, math.pi / t_c
+    big_e, big_c = math.exp(-decay * dt), math.cos(omega * dt)
+    k_step = m_e * (1 + big_e ** 2 - 2 * big_e * big_c) / dt ** 2
+    assert contact == pytest.approx(k_step * d, rel=1e-9)
+    assert k_step == pytest.approx(k, rel=0.1)
+    assert lubrication == 0.0
+    assert eps == pytest.approx(-d / 1e-3, rel=1e-9)
+
+
+def test_single_reports_the_film_of_unequal_spheres(lmp):
+    """Apart by a gap inside the film, approaching: p2 is the film force with R = 2 R1 R2/(R1+R2)."""
+    script = pair_at_rest(0.001 + 0.0005 + 2e-5, 0.001).replace(
+        "fix nve all nve/sphere", "velocity all set 0 0 0\nset atom 2 vx -0.01\nfix nve all nve/sphere")
+    result = lmp(script)
+    contact, lubrication, eps = result["single"]
+    radius = 2 * 1e-3 * 0.5e-3 / 1.5e-3
+    lam = lambda e: 0.5 / e - 0.45 * math.log(e) - 3 / 56 * e * math.log(e) + 1.346
+    expected = 6 * math.pi * 1e-3 * radius * 0.01 * (lam(2e-5 / radius) - lam(0.09375))
+    assert eps == pytest.approx(2e-5 / radius, rel=1e-9)
+    assert contact == 0.0
+    assert lubrication == pytest.approx(expected, rel=1e-9)
+
+
+@pytest.mark.parametrize("newton", ["on", "off"])
+def test_film_pairs_survive_any_skin(lmp, newton):
+    """A tiny skin must not lose the pair inside the film (radius lists do: LAMMPS PR #4685)."""
+    mu = scenes.viscosity_for_stokes(100)
+    wide = lmp(scenes.pair_bounce(0.9, mu=mu, skin=0.5e-3, newton=newton, radius_ratio=0.5,
+                                  mass_ratio=0.125))
+    tiny = lmp(scenes.pair_bounce(0.9, mu=mu, skin=1e-9, newton=newton, radius_ratio=0.5,
+                                  mass_ratio=0.125))
+    assert wide["e"] < 0.9 * 0.95            # the film acted
+    assert tiny["e"] == pytest.approx(wide["e"], rel=1e-10)
