@@ -15,6 +15,7 @@ SCRATCH = ROOT / "build" / "test-scratch"
 
 @pytest.fixture(scope="session", autouse=True)
 def plugin_built():
+    shutil.rmtree(SCRATCH, ignore_errors=True)    # what failed last time is gone now
     if not lammps_run.PLUGIN.exists():
         pytest.exit(f"{lammps_run.PLUGIN} is missing: run 'make build' first", returncode=2)
 

@@ -31,6 +31,7 @@ compute sum all reduce sum c_pl[2] c_pl[3] c_pl[4] inputs local
 fix nve all nve/sphere
 run 0
 print "RESULT pe $(pe:%.15g)"
+print "RESULT press $(press:%.15g)"
 print "RESULT fx1 $(fx[1]:%.15g)"
 print "RESULT single $(c_sum[1]:%.15g) $(c_sum[2]:%.15g) $(c_sum[3]:%.15g)"
 """
@@ -61,6 +62,8 @@ def test_energy_and_single_in_overlap(lmp):
     assert k_step == pytest.approx(k, rel=0.1)
     assert lubrication == 0.0
     assert eps == pytest.approx(-d / 1e-3, rel=1e-9)
+    # Virial of the pair at rest: P = r F / (3 V), box of 0.02^3.
+    assert result["press"] == pytest.approx((0.002 - d) * contact / (3 * 0.02 ** 3), rel=1e-9)
 
 
 def test_single_reports_the_film_of_unequal_spheres(lmp):
@@ -87,3 +90,38 @@ def test_film_pairs_survive_any_skin(lmp, newton):
                                   mass_ratio=0.125))
     assert wide["e"] < 0.9 * 0.95            # the film acted
     assert tiny["e"] == pytest.approx(wide["e"], rel=1e-10)
+
+
+def neighbor_info(log):
+    return log[log.index("Neighbor list info"):log.index("Per MPI rank memory")]
+
+
+def test_dry_pays_only_for_contact(lmp):
+    """Dry: a radius-based list whose cutoff is the sum of the largest radii (+ skin)."""
+    lmp(scenes.pair_bounce(0.9))
+    info = neighbor_info(lmp.log)
+    assert "half/size/bin" in info
+    assert "master list distance cutoff = 0.0025" in info      # 2 R + skin R/2
+
+
+def test_wet_list_covers_the_film(lmp):
+    lmp(scenes.pair_bounce(0.9, mu=1e-3))
+    info = neighbor_info(lmp.log)
+    assert "half/size" not in info and "half/bin" in info
+    cutoff = 2e-3 + 0.09375e-3 + 0.5e-3                          # 2 R + eps_al R + skin
+    assert f"master list distance cutoff = {cutoff:.6g}" in info
+
+
+def test_time_step_change_rescales_stiffness(lmp):
+    """k follows dt: after halving dt the contact still lasts N_c (new) steps and gives e_d."""
+    script = scenes.wall_bounce(0.5, dt_ru=0.005, steps=10)
+    dt2 = 0.0025 * scenes.R / scenes.U
+    script = script.replace('variable n equal', f"""timestep {dt2}
+fix count2 all ave/time 1 1 1 v_overlap mode scalar ave running
+run 600
+variable n2 equal f_count2*601
+print "RESULT steps2 $(v_n2:%.6f)"
+variable n equal""")
+    result = lmp(script)
+    assert result["e"] == pytest.approx(0.5, rel=1e-9)
+    assert abs(result["steps2"] - 8) <= 1
