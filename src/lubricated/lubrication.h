@@ -41,6 +41,27 @@ inline double lambda_of(Partner partner, double eps)
   return partner == Partner::wall ? lambda_particle_wall(eps) : lambda_particle_particle(eps);
 }
 
+// Antiderivatives of the two expansions (d/deps of these is lambda).
+inline double lambda_particle_particle_integral(double eps)
+{
+  const double log_eps = std::log(eps);
+  return 0.5 * log_eps - 0.45 * (eps * log_eps - eps) -
+      (3.0 / 56.0) * (0.5 * eps * eps * log_eps - 0.25 * eps * eps) + 1.346 * eps;
+}
+
+inline double lambda_particle_wall_integral(double eps)
+{
+  const double log_eps = std::log(eps);
+  return log_eps - 0.2 * (eps * log_eps - eps) -
+      (1.0 / 21.0) * (0.5 * eps * eps * log_eps - 0.25 * eps * eps) + 0.9713 * eps;
+}
+
+inline double lambda_integral_of(Partner partner, double eps)
+{
+  return partner == Partner::wall ? lambda_particle_wall_integral(eps)
+                                  : lambda_particle_particle_integral(eps);
+}
+
 // Per-type-pair lubrication constants. eps_activation <= 0 marks a dry pair.
 struct Lubrication {
   Partner partner = Partner::particle;
@@ -57,6 +78,32 @@ struct Lubrication {
   double activation_for(double radius) const
   {
     return grid_spacing > 0.0 ? 0.75 * grid_spacing / radius : eps_activation;
+  }
+
+  // Film integral P(eps) = int_eps^inf [c_l(s) / (6 pi mu R)] ds over the zones above:
+  // 0 beyond eps_al, growing towards contact, constant below eps_2. The impulse of the film
+  // along any path from eps_a to eps_b is exactly 6 pi mu R^2 [P(eps_b) - P(eps_a)].
+  double film_integral(double eps, double radius) const
+  {
+    const double eps_al = activation_for(radius);
+    if (eps >= eps_al) return 0.0;
+    const double lambda_al = grid_spacing > 0.0 ? lambda_of(partner, eps_al) : lambda_activation;
+    const double e = std::max(eps, eps_saturation);
+    double p = lambda_integral_of(partner, eps_al) - lambda_integral_of(partner, e) -
+        lambda_al * (eps_al - e);
+    if (eps < eps_saturation) {
+      const double below = eps_saturation - std::max(eps, eps_release);
+      p += (lambda_of(partner, eps_saturation) - lambda_al) * below;
+    }
+    return p;
+  }
+
+  // Momentum the film transfers to the pair (along n) while the gap goes from gap_before to
+  // gap_after: the path integral of c_l, independent of how the path is split into steps.
+  double impulse(double gap_before, double gap_after, double radius) const
+  {
+    return six_pi_mu * radius * radius *
+        (film_integral(gap_after / radius, radius) - film_integral(gap_before / radius, radius));
   }
 
   // Damping coefficient c_l >= 0 such that F_l = -c_l u_n, for normalised gap eps.

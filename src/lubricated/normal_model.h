@@ -16,6 +16,9 @@
 #include "lubrication.h"
 #include "spring_dashpot.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace lubricated {
 
 struct NormalModel {
@@ -24,10 +27,11 @@ struct NormalModel {
   bool exact = true;          // false: sample F_s once per step (for comparison only)
   Lubrication lubrication;
 
-  // Whether the pair needs evaluating at gap g with normal velocity u (cheap pre-test).
+  // Whether the pair needs evaluating at gap g with normal velocity u (cheap pre-test):
+  // in the film or in contact now, or within the last or next step of it.
   bool acts(double gap, double radius, double u) const
   {
-    return gap < 0.0 || gap < reach(radius) || (exact && contact_possible(gap, u, step.dt));
+    return gap < reach(radius) + (exact ? std::fabs(u) * step.dt : 0.0);
   }
 
   // Largest gap (length) at which the model acts, for a contact of lubrication radius R.
@@ -67,7 +71,19 @@ inline NormalForce normal_force(const NormalModel &m, double gap, double radius,
   }
   if (m.exact && contact_possible(gap, u_n, m.step.dt))
     f.contact = reduced_mass * contact_acceleration(m.step, gap, u_n);
-  if (m.lubrication.active()) f.lubrication = -m.lubrication.damping(gap / radius, radius) * u_n;
+  if (m.lubrication.active()) {
+    if (m.exact) {
+      // The film's path integral over the last step (gap - u_n dt -> gap): summed over
+      // steps it telescopes to the exact impulse of the continuous model, whatever dt.
+      // It may stop the relative motion but never reverse it: |impulse| <= m_e |u_n|.
+      const double dt = m.step.dt;
+      const double limit = reduced_mass * std::fabs(u_n);
+      const double impulse = m.lubrication.impulse(gap - u_n * dt, gap, radius);
+      f.lubrication = std::max(-limit, std::min(limit, impulse)) / dt;
+    } else {
+      f.lubrication = -m.lubrication.damping(gap / radius, radius) * u_n;
+    }
+  }
   return f;
 }
 

@@ -6,6 +6,7 @@
 
 #include "lammps.h"
 
+#include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_wall_lubrication/fix_wall_lubrication.h"
 #include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
 
@@ -44,6 +45,11 @@ static Fix *create_fix_wall(LAMMPS *lmp, int narg, char **arg)
   return new FixWallLubrication(lmp, narg, arg);
 }
 
+static Fix *create_fix_midpoint(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixNVESphereMidpoint(lmp, narg, arg);
+}
+
 void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
 {
   auto reg = (lammpsplugin_regfunc) regfunc;
@@ -63,5 +69,10 @@ void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "wall/lubrication";
   plugin.info = "planar walls with lubricated spring-dashpot contact";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_wall;
+  (*reg)(&plugin, lmp);
+
+  plugin.name = "nve/sphere/midpoint";
+  plugin.info = "time integration of Brandle de Motta et al. 2011 for spheres";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_midpoint;
   (*reg)(&plugin, lmp);
 }

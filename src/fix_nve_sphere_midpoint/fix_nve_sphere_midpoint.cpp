@@ -1,0 +1,180 @@
+/* ----------------------------------------------------------------------
+   fix nve/sphere/midpoint (see doc/fix_nve_sphere_midpoint.rst)
+
+     X~ = X^n + dt/2 V^n,  V~ = 3/2 V^n - 1/2 V^(n-1)        initial_integrate
+     forces F(X~, V~) (pair styles, walls, gravity, ...)
+     V^(n+1) = V^n + dt F / m                                final_integrate
+     X^(n+1) = X^n + dt (V^(n+1) + V^n) / 2 = X~ + dt/2 V^(n+1)
+
+   Angular velocities follow the same scheme with I = 2/5 m r^2. The last form of the
+   position update needs no copy of X^n, so periodic remapping between the two halves of
+   the step is harmless. The first step after the fix is created uses V^(n-1) = V^n.
+------------------------------------------------------------------------- */
+
+#include "fix_nve_sphere_midpoint.h"
+
+#include "atom.h"
+#include "error.h"
+#include "memory.h"
+#include "update.h"
+
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static constexpr const char *STYLE = "Fix nve/sphere/midpoint";
+
+FixNVESphereMidpoint::FixNVESphereMidpoint(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg)
+{
+  if (narg > 3) error->all(FLERR, "{}: unknown keyword '{}' (the fix takes no arguments)", STYLE, arg[3]);
+  if (!(atom->radius_flag && atom->rmass_flag && atom->omega_flag && atom->torque_flag))
+    error->all(FLERR, "{} requires atom_style sphere", STYLE);
+
+  time_integrate = 1;
+  restart_peratom = 1;
+  maxexchange = NVALUES;
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+}
+
+FixNVESphereMidpoint::~FixNVESphereMidpoint()
+{
+  if (copymode) return;
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(state);
+}
+
+int FixNVESphereMidpoint::setmask()
+{
+  return INITIAL_INTEGRATE | FINAL_INTEGRATE;
+}
+
+void FixNVESphereMidpoint::init()
+{
+  dt = update->dt;
+  const double *radius = atom->radius;
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((mask[i] & groupbit) && radius[i] == 0.0)
+      error->one(FLERR, "{} requires extended particles (radius > 0)", STYLE);
+}
+
+void FixNVESphereMidpoint::reset_dt()
+{
+  dt = update->dt;
+}
+
+void FixNVESphereMidpoint::initial_integrate(int /*vflag*/)
+{
+  double **x = atom->x, **v = atom->v, **omega = atom->omega;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const double half_dt = 0.5 * dt;
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double *s = state[i];
+    for (int d = 0; d < 3; d++) {
+      s[6 + d] = v[i][d];
+      s[9 + d] = omega[i][d];
+      x[i][d] += half_dt * v[i][d];
+      v[i][d] = 1.5 * s[6 + d] - 0.5 * s[d];
+      omega[i][d] = 1.5 * s[9 + d] - 0.5 * s[3 + d];
+    }
+  }
+}
+
+void FixNVESphereMidpoint::final_integrate()
+{
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  double **omega = atom->omega, **torque = atom->torque;
+  const double *rmass = atom->rmass, *radius = atom->radius;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const double half_dt = 0.5 * dt;
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double *s = state[i];
+    const double dt_over_m = dt / rmass[i];
+    const double dt_over_inertia = dt / (0.4 * rmass[i] * radius[i] * radius[i]);
+    for (int d = 0; d < 3; d++) {
+      const double v_new = s[6 + d] + dt_over_m * f[i][d];
+      x[i][d] += half_dt * v_new;
+      s[d] = s[6 + d];
+      v[i][d] = v_new;
+      s[3 + d] = s[9 + d];
+      omega[i][d] = s[9 + d] + dt_over_inertia * torque[i][d];
+    }
+  }
+}
+
+double FixNVESphereMidpoint::memory_usage()
+{
+  return (double) atom->nmax * NVALUES * sizeof(double);
+}
+
+void FixNVESphereMidpoint::grow_arrays(int nmax)
+{
+  memory->grow(state, nmax, NVALUES, "nve/sphere/midpoint:state");
+}
+
+void FixNVESphereMidpoint::copy_arrays(int i, int j, int /*delflag*/)
+{
+  memcpy(state[j], state[i], NVALUES * sizeof(double));
+}
+
+// New atoms (create_atoms, fix pour, ...) start with V^(n-1) = V^n.
+void FixNVESphereMidpoint::set_arrays(int i)
+{
+  for (int d = 0; d < 3; d++) {
+    state[i][d] = state[i][6 + d] = atom->v[i][d];
+    state[i][3 + d] = state[i][9 + d] = atom->omega[i][d];
+  }
+}
+
+int FixNVESphereMidpoint::pack_exchange(int i, double *buf)
+{
+  for (int k = 0; k < NVALUES; k++) buf[k] = state[i][k];
+  return NVALUES;
+}
+
+int FixNVESphereMidpoint::unpack_exchange(int nlocal, double *buf)
+{
+  for (int k = 0; k < NVALUES; k++) state[nlocal][k] = buf[k];
+  return NVALUES;
+}
+
+// Restart files hold V^(n-1) and omega^(n-1): written between steps, that is all the
+// scheme needs to continue exactly.
+int FixNVESphereMidpoint::pack_restart(int i, double *buf)
+{
+  buf[0] = 7;
+  for (int k = 0; k < 6; k++) buf[1 + k] = state[i][k];
+  return 7;
+}
+
+void FixNVESphereMidpoint::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int k = 0; k < 6; k++) state[nlocal][k] = extra[nlocal][m++];
+}
+
+int FixNVESphereMidpoint::size_restart(int /*nlocal*/)
+{
+  return 7;
+}
+
+int FixNVESphereMidpoint::maxsize_restart()
+{
+  return 7;
+}

@@ -1,0 +1,46 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   fix nve/sphere/midpoint: the time integration of Brandle de Motta et al. (CFM 2011),
+   eqs. (1)-(3) with the second-order extrapolation V~ = 3/2 V^n - 1/2 V^(n-1) (MODEL.md
+   section 4). Forces are evaluated at the predicted mid-step state; usable instead of
+   fix nve/sphere. Keeps V^(n-1) (and omega^(n-1)) per atom, through migration and restarts.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_FIX_NVE_SPHERE_MIDPOINT_H
+#define LMP_FIX_NVE_SPHERE_MIDPOINT_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixNVESphereMidpoint : public Fix {
+ public:
+  FixNVESphereMidpoint(class LAMMPS *, int, char **);
+  ~FixNVESphereMidpoint() override;
+
+  int setmask() override;
+  void init() override;
+  void initial_integrate(int) override;
+  void final_integrate() override;
+  void reset_dt() override;
+
+  double memory_usage() override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+
+ protected:
+  // Per atom: 0-2 V^(n-1), 3-5 omega^(n-1) between steps; 6-8 V^n, 9-11 omega^n within one.
+  static constexpr int NVALUES = 12;
+  double **state = nullptr;
+  double dt = 0.0;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
