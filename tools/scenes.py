@@ -34,14 +34,21 @@ newton ${newton}
 """
 
 
-def wall_bounce(e_dry, dt_ru=WET_DT, mu=0.0, ncontact=8, extra="", gap0=0.2137, steps=None):
+def duration(ncontact, tcontact_ru):
+    """Contact-duration keyword: N_c steps, or a fixed t_c given in R/U."""
+    return f"tcontact {tcontact_ru * R / U}" if tcontact_ru else f"ncontact {ncontact}"
+
+
+def wall_bounce(e_dry, dt_ru=WET_DT, mu=0.0, ncontact=8, extra="", gap0=0.2137, steps=None,
+                tcontact_ru=None, integrator="nve/sphere"):
     """A sphere starting gap0*R above a zplane wall, moving down at U.
 
     Prints RESULT e (rebound/impact speed), RESULT contact_steps (steps with overlap).
     """
     dt = dt_ru * R / U
     travel = (2.0 * gap0 + 2.0 * EPS_AL + 0.2) * R / U     # in, contact, out of the film
-    steps = steps or int(math.ceil(travel / dt)) + 8 * ncontact
+    steps = steps or int(math.ceil(travel / dt)) + 8 * ncontact + (
+        int(4 * tcontact_ru * R / U / dt) if tcontact_ru else 0)
     wet = f"viscosity {mu} activation {EPS_AL}" if mu > 0 else ""
     return HEADER.replace("${newton}", "on") + f"""
 region box block -0.01 0.01 -0.01 0.01 0 0.02
@@ -51,8 +58,8 @@ set atom 1 diameter {2 * R} density {RHO}
 velocity all set 0 0 {-U}
 pair_style lubricated/springdashpot
 pair_coeff * * 0.9
-fix wall all wall/lubrication {e_dry} ncontact {ncontact} {wet} {extra} zplane 0.0 NULL
-fix nve all nve/sphere
+fix wall all wall/lubrication {e_dry} {duration(ncontact, tcontact_ru)} {wet} {extra} zplane 0.0 NULL
+fix nve all {integrator}
 timestep {dt}
 variable overlap equal "z[1] < {R}"
 variable contact_steps equal 0
@@ -66,7 +73,8 @@ print "RESULT contact_steps $(v_n:%.6f)"
 
 
 def pair_bounce(e_dry, mass_ratio=1.0, dt_ru=WET_DT, mu=0.0, ncontact=8, gap0=0.2137, newton="on",
-                radius_ratio=1.0, x_offset=0.0, skin=0.5 * R):
+                radius_ratio=1.0, x_offset=0.0, skin=0.5 * R, tcontact_ru=None, extra="",
+                integrator="nve/sphere"):
     """Two spheres approaching head-on along x at relative speed U (centre-of-mass frame).
 
     Sphere 2 has radius radius_ratio*R and density such that m2/m1 = mass_ratio.
@@ -80,11 +88,13 @@ def pair_bounce(e_dry, mass_ratio=1.0, dt_ru=WET_DT, mu=0.0, ncontact=8, gap0=0.
     x1 = x_offset - R - 0.5 * gap0 * R
     x2 = x_offset + r2 + 0.5 * gap0 * R
     travel = (2.0 * gap0 + 4.0 * EPS_AL + 0.2) * R / U
-    steps = int(math.ceil(travel / dt)) + 8 * ncontact
+    half = max(0.01, 3.0 * (R + r2))
+    steps = int(math.ceil(travel / dt)) + 8 * ncontact + (
+        int(4 * tcontact_ru * R / U / dt) if tcontact_ru else 0)
     wet = f"viscosity {mu} activation {EPS_AL}" if mu > 0 else ""
     return HEADER.replace("${newton}", newton) + f"""
 boundary p p p
-region box block -0.01 0.01 -0.01 0.01 -0.01 0.01
+region box block -{half} {half} -{half} {half} -{half} {half}
 create_box 1 box
 create_atoms 1 single {x1} 0 0
 create_atoms 1 single {x2} 0 0
@@ -94,8 +104,8 @@ velocity all set 0 0 0
 set atom 1 vx {v1}
 set atom 2 vx {v2}
 pair_style lubricated/springdashpot
-pair_coeff * * {e_dry} ncontact {ncontact} {wet}
-fix nve all nve/sphere
+pair_coeff * * {e_dry} {duration(ncontact, tcontact_ru)} {wet} {extra}
+fix nve all {integrator}
 timestep {dt}
 variable overlap equal "(x[2]-x[1]) < {R + r2}"
 fix count all ave/time 1 1 1 v_overlap mode scalar ave running

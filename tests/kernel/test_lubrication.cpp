@@ -97,3 +97,49 @@ TEST(Dry, ZeroViscosityRunsNoLubrication)
   EXPECT_EQ(m.reach(1.0), 0.0);
   EXPECT_EQ(normal_force(m, -1e-4, 1.0, 1.0, -1.0).lubrication, 0.0);
 }
+
+TEST_P(Film, IntegralIsTheAntiderivativeOfTheDamping)
+{
+  const Partner partner = GetParam();
+  const double R = 1e-3;
+  const Lubrication lub = make_lubrication(partner, 1e-3, 0.1, 0.0, 1e-3, -1e-2);
+  const double scale = lub.six_pi_mu * R;
+  // -dP/deps = c_l / (6 pi mu R) in every zone (central differences away from the kinks).
+  for (double eps : {0.09, 0.05, 0.01, 0.002, 5e-4, 0.0, -5e-3, -0.02, 0.2}) {
+    const double h = 1e-7;
+    const double slope = (lub.film_integral(eps - h, R) - lub.film_integral(eps + h, R)) / (2 * h);
+    EXPECT_NEAR(slope, lub.damping(eps, R) / scale, 1e-5 * (1 + slope)) << "eps=" << eps;
+  }
+  // Continuous at every zone boundary.
+  for (double edge : {0.1, 1e-3, -1e-2})
+    EXPECT_NEAR(lub.film_integral(edge * (1 + 1e-12), R), lub.film_integral(edge * (1 - 1e-12), R), 1e-7);
+  EXPECT_EQ(lub.film_integral(0.1, R), 0.0);
+}
+
+TEST_P(Film, ImpulseOfAPassTelescopesWhateverTheSteps)
+{
+  const Lubrication lub = make_lubrication(GetParam(), 1e-3, 0.1, 0.0, 1e-3, -1e-2);
+  const double R = 1e-3, start = 0.15 * R, end = -0.005 * R;
+  for (int steps : {1, 7, 1000}) {
+    double total = 0.0;
+    for (int k = 0; k < steps; ++k) {
+      const double a = start + (end - start) * k / steps, b = start + (end - start) * (k + 1) / steps;
+      total += lub.impulse(a, b, R);
+    }
+    EXPECT_NEAR(total, lub.impulse(start, end, R), 1e-12 * lub.impulse(start, end, R));
+  }
+  EXPECT_GT(lub.impulse(start, end, R), 0.0);    // approaching: pushed apart
+  EXPECT_LT(lub.impulse(end, start, R), 0.0);    // separating: held back
+}
+
+TEST(FilmImpulse, NeverReversesTheRelativeMotion)
+{
+  Coefficients c;
+  c.e_dry = 0.9;
+  c.viscosity = 1e6;    // St ~ 1e-7
+  c.eps_activation = 0.1;
+  const double dt = 1e-4, m_e = 1e-6, u = -0.1;
+  const NormalModel m = make_normal_model(c, Partner::wall, dt);
+  const NormalForce f = normal_force(m, 1e-5, 1e-3, m_e, u);
+  EXPECT_DOUBLE_EQ(f.lubrication * dt, m_e * -u);    // stops it, exactly, no more
+}

@@ -1,0 +1,126 @@
+"""Stiff and extreme inputs: no crash, no NaN, no energy gain (issue: stiff and extreme cases).
+
+Energy bounds used: a rebound is never faster than e_d times the impact (the film only
+removes momentum and never reverses the relative motion; the contact is exact), and a
+sphere released from an overlap leaves no faster than its stored spring energy allows.
+"""
+import math
+
+import pytest
+
+import scenes
+
+R, U = scenes.R, scenes.U
+
+
+@pytest.mark.parametrize("dt_ru", [0.02, 0.002])
+def test_rebound_vanishes_smoothly_as_stokes_goes_to_zero(lmp, dt_ru):
+    stokes = [1e5, 1000, 100, 50, 30, 20, 5, 1, 0.1, 0.01]
+    ratios = [lmp(scenes.wall_bounce(0.9, dt_ru=dt_ru, mu=scenes.viscosity_for_stokes(st),
+                                     tcontact_ru=0.04))["e"] / 0.9 for st in stokes]
+    assert all(math.isfinite(r) for r in ratios)
+    assert all(-1e-9 <= r <= 1.0 + 1e-9 for r in ratios)      # a sphere held in the film may
+    assert all(a >= b - 1e-9 for a, b in zip(ratios, ratios[1:]))    # creep on at ~1e-17
+    assert ratios[0] > 0.999 and max(abs(r) for r in ratios[-4:]) < 1e-9
+
+
+@pytest.mark.parametrize("ncontact", [1, 2, 3, 8, 64])
+def test_any_contact_step_count(lmp, ncontact):
+    result = lmp(scenes.wall_bounce(0.5, dt_ru=0.005, ncontact=ncontact))
+    assert result["e"] == pytest.approx(0.5, rel=1e-6)
+    if ncontact < 8:
+        assert "WARNING" in lmp.log
+
+
+@pytest.mark.parametrize("e_dry", [0.01, 0.1, 0.999, 1.0])
+def test_any_dry_restitution(lmp, e_dry):
+    assert lmp(scenes.pair_bounce(e_dry, dt_ru=0.005))["e"] == pytest.approx(e_dry, rel=1e-6)
+
+
+@pytest.mark.parametrize("scene", ["wall", "pair"])
+def test_half_radius_overlap_in_one_step(lmp, scene):
+    """u dt = R/2: the first step into contact would overlap by half a radius."""
+    if scene == "wall":
+        result = lmp(scenes.wall_bounce(0.8, dt_ru=0.5, ncontact=2, gap0=1.37))
+    else:
+        result = lmp(scenes.pair_bounce(0.8, dt_ru=0.5, ncontact=2, gap0=1.37, skin=2 * R))
+    assert result["e"] == pytest.approx(0.8, rel=1e-6)
+
+
+def test_radius_ratio_one_to_ten(lmp):
+    dry = lmp(scenes.pair_bounce(0.7, radius_ratio=10.0, mass_ratio=1000.0, dt_ru=0.005, skin=R))
+    assert dry["e"] == pytest.approx(0.7, rel=1e-6)
+    wet = lmp(scenes.pair_bounce(0.7, radius_ratio=10.0, mass_ratio=1000.0, dt_ru=0.005, skin=R,
+                                 mu=scenes.viscosity_for_stokes(20)))
+    assert 0.0 <= wet["e"] < dry["e"]
+
+
+CLUSTER = scenes.HEADER.replace("${newton}", "on") + """
+boundary p p p
+lattice fcc {a}
+region box block -3 3 -3 3 -3 3
+create_box 1 box
+region ball sphere 0 0 0 0.75
+create_atoms 1 region ball
+set group all diameter {d} density 8000
+velocity all create 1e-14 4928459 dist gaussian
+pair_style lubricated/springdashpot
+pair_coeff * * 0.5 ncontact 8 {wet}
+fix nve all nve/sphere
+timestep 5e-5
+compute e all reduce sum c_ke
+compute ke all ke/atom
+thermo_style custom step atoms ke pe etotal
+thermo 50
+run 0
+print "RESULT start $(etotal:%.15g) $(atoms)"
+run 1000
+print "RESULT end $(etotal:%.15g)"
+print "RESULT finite $(is_os(nan)) $(x[7]:%.10g)"
+""".replace("compute e all reduce sum c_ke\n", "")
+
+
+@pytest.mark.parametrize("wet", ["", "viscosity 1e-2 activation 0.09375"])
+def test_dense_pile_with_twelve_contacts(lmp, wet):
+    """13 spheres: one touching 12 in fcc, all overlapping by 1 % of R, at rest: the pile
+    may relax but its total energy (kinetic + spring) never grows."""
+    a = 2 * R * 0.99 * math.sqrt(2)          # nearest-neighbour distance 0.99 * 2R
+    script = CLUSTER.replace("{a}", repr(a)).replace("{d}", repr(2 * R)).replace("{wet}", wet)
+    script = script.replace('print "RESULT finite $(is_os(nan)) $(x[7]:%.10g)"\n', "")
+    result = lmp(script.replace("lattice fcc", "lattice fcc").replace(
+        "lattice fcc " + repr(a), f"lattice custom {a} a1 1 0 0 a2 0 1 0 a3 0 0 1 "
+        "basis 0 0 0 basis 0.5 0.5 0 basis 0.5 0 0.5 basis 0 0.5 0.5"))
+    start, natoms = result["start"]
+    assert natoms == 13
+    assert start > 0.0
+    assert result["end"] <= start * (1 + 1e-9)
+
+
+def test_coincident_centres(lmp):
+    script = scenes.HEADER.replace("${newton}", "on") + f"""
+boundary p p p
+region box block -0.01 0.01 -0.01 0.01 -0.01 0.01
+create_box 1 box
+create_atoms 1 single 0 0 0
+create_atoms 1 single 0 0 0
+create_atoms 1 single {1.9 * R} 0 0
+set group all diameter {2 * R} density 8000
+pair_style lubricated/springdashpot
+pair_coeff * * 0.5 viscosity 1e-3 activation 0.09375
+fix nve all nve/sphere
+timestep 5e-6
+run 200
+print "RESULT state $(x[1]:%.10g) $(x[3]:%.10g) $(vx[3]:%.10g) $(ke:%.10g)"
+"""
+    result = lmp(script)
+    assert all(math.isfinite(v) for v in result["state"])
+
+
+def test_sphere_starting_inside_a_wall(lmp):
+    """Released from an overlap of R/2 at rest: pushed out, no faster than the spring's energy."""
+    t_c = 8 * 0.005 * R / U
+    script = scenes.wall_bounce(0.9, dt_ru=0.005, gap0=-0.5, steps=40).replace(
+        f"velocity all set 0 0 {-U}", "velocity all set 0 0 0")
+    vz = lmp(script)["e"] * U
+    v_max = 0.5 * R * math.sqrt(math.pi ** 2 + math.log(0.9) ** 2) / t_c
+    assert 0.0 < vz <= v_max * (1 + 1e-9)
