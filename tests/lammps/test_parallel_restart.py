@@ -49,3 +49,34 @@ run 300
 """ + dump_state(), nprocs=nprocs, name="in.restart")
     assert "pair_coeff" not in (lmp.dir / "in.restart").read_text()
     assert_same_state(reference, restarted)
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_midpoint_integrator_restarts_and_runs_in_parallel(lmp, nprocs):
+    """fix nve/sphere/midpoint keeps V^(n-1) through restarts and migration."""
+    script = chain(steps=300, extra_run="write_restart mid.restart\nrun 300").replace(
+        "fix nve all nve/sphere", "fix nve all nve/sphere/midpoint")
+    reference = lmp(script + dump_state(), nprocs=nprocs)
+    serial = lmp(script + dump_state(), nprocs=1)
+    assert_same_state(reference, serial)
+    restarted = lmp(f"""plugin load ${{plugin}}
+read_restart mid.restart
+comm_modify vel yes
+fix walls all wall/lubrication 0.7 viscosity {2.0 / 9.0 * 8000 * 1e-3 * 0.1 / 100} grid 1.25e-4 xplane -0.008 0.008
+fix nve all nve/sphere/midpoint
+timestep {0.005 * 1e-3 / 0.1}
+neighbor {0.3e-3} bin
+run 300
+""" + dump_state(), nprocs=nprocs, name="in.restart")
+    assert_same_state(reference, restarted)
+    # Without the stored V^(n-1) the continuation would differ: the test can fail.
+    fresh = lmp(f"""plugin load ${{plugin}}
+read_restart mid.restart
+comm_modify vel yes
+fix walls all wall/lubrication 0.7 viscosity {2.0 / 9.0 * 8000 * 1e-3 * 0.1 / 100} grid 1.25e-4 xplane -0.008 0.008
+fix other all nve/sphere/midpoint
+timestep {0.005 * 1e-3 / 0.1}
+neighbor {0.3e-3} bin
+run 300
+""" + dump_state(), nprocs=nprocs, name="in.fresh")
+    assert any(fresh[k] != pytest.approx(reference[k], rel=1e-10, abs=1e-13) for k in reference)
