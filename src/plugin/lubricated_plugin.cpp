@@ -6,6 +6,7 @@
 
 #include "lammps.h"
 
+#include "fix_fluid_drag/fix_fluid_drag.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_wall_lubrication/fix_wall_lubrication.h"
 #include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
@@ -45,6 +46,11 @@ static Fix *create_fix_wall(LAMMPS *lmp, int narg, char **arg)
   return new FixWallLubrication(lmp, narg, arg);
 }
 
+static Fix *create_fix_drag(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixFluidDrag(lmp, narg, arg);
+}
+
 static Fix *create_fix_midpoint(LAMMPS *lmp, int narg, char **arg)
 {
   return new FixNVESphereMidpoint(lmp, narg, arg);
@@ -74,5 +80,10 @@ void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "nve/sphere/midpoint";
   plugin.info = "time integration of Brandle de Motta et al. 2011 for spheres";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_midpoint;
+  (*reg)(&plugin, lmp);
+
+  plugin.name = "fluid/drag";
+  plugin.info = "drag, hindered settling and buoyancy of an unresolved fluid on spheres";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_drag;
   (*reg)(&plugin, lmp);
 }

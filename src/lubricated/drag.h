@@ -1,0 +1,87 @@
+// Force of an unresolved fluid on one sphere, for the drag fix (MODEL.md section 6).
+//
+//   F = beta (u_f - u_p) - rho_f V_p g
+//
+// beta [mass/time] from the slip speed w = |u_f - u_p| and the local voidage eps = 1 - phi:
+//   stokes:            beta = 3 pi mu d
+//   schiller-naumann:  beta = 3 pi mu d (1 + 0.15 Re^0.687), Re = rho_f w d / mu < 1000;
+//                      Newton's regime C_D = 0.44 above (Schiller & Naumann 1933)
+// times a hindered-settling factor for dense suspensions:
+//   richardson-zaki n: eps^(1 - n), so that a uniform bed fluidised by a superficial
+//                      velocity U = eps u_f settles into U = u_t eps^n (Richardson & Zaki
+//                      1954); exact in the Stokes regime
+//   di-felice:         eps^(1 - chi) with the slip taken as superficial, eps (u_f - u_p),
+//                      chi = 3.7 - 0.65 exp(-(1.5 - log10 Re_eps)^2 / 2) (Di Felice 1994)
+// The second term is buoyancy (hydrostatic pressure of the fluid), g the gravity vector.
+#pragma once
+
+#include "spring_dashpot.h"    // pi
+
+#include <algorithm>
+#include <cmath>
+
+namespace lubricated {
+
+enum class DragLaw { stokes, schiller_naumann };
+enum class Hindrance { none, richardson_zaki, di_felice };
+
+struct DragModel {
+  double viscosity = 0.0;       // mu_f  [mass/(length time)]
+  double density = 0.0;         // rho_f [mass/length^3]
+  DragLaw law = DragLaw::schiller_naumann;
+  Hindrance hindrance = Hindrance::none;
+  double rz_exponent = 4.65;    // Richardson-Zaki n (Stokes regime value)
+  double min_voidage = 0.36;    // eps never taken below random close packing
+};
+
+// Single-sphere drag coefficient beta = |F| / w for slip speed w.
+inline double single_sphere_beta(const DragModel &m, double diameter, double slip_speed)
+{
+  const double stokes = 3.0 * pi * m.viscosity * diameter;
+  if (m.law == DragLaw::stokes) return stokes;
+  const double re = m.density * slip_speed * diameter / m.viscosity;
+  if (re < 1000.0) return stokes * (1.0 + 0.15 * std::pow(re, 0.687));
+  return stokes * 0.44 * re / 24.0;
+}
+
+// beta including the hindrance of neighbours at local voidage eps (1 for a lone sphere).
+inline double drag_beta(const DragModel &m, double diameter, double slip_speed, double voidage)
+{
+  const double eps = std::min(1.0, std::max(voidage, m.min_voidage));
+  switch (m.hindrance) {
+    case Hindrance::none:
+      return single_sphere_beta(m, diameter, slip_speed);
+    case Hindrance::richardson_zaki:
+      return single_sphere_beta(m, diameter, slip_speed) * std::pow(eps, 1.0 - m.rz_exponent);
+    case Hindrance::di_felice: {
+      const double w = eps * slip_speed;    // superficial slip
+      const double re = std::max(m.density * w * diameter / m.viscosity, 1e-12);
+      const double chi = 3.7 - 0.65 * std::exp(-0.5 * std::pow(1.5 - std::log10(re), 2));
+      // F = beta_single(w) w eps^-chi, expressed per unit interstitial slip.
+      return single_sphere_beta(m, diameter, w) * eps * std::pow(eps, -chi);
+    }
+  }
+  return 0.0;
+}
+
+inline double sphere_volume(double radius)
+{
+  return 4.0 / 3.0 * pi * radius * radius * radius;
+}
+
+// Terminal settling speed of a lone sphere (drag = buoyant weight), by bisection; for tests
+// and for the log report. g > 0 is the magnitude of gravity.
+inline double terminal_speed(const DragModel &m, double diameter, double particle_density, double g)
+{
+  const double volume = sphere_volume(0.5 * diameter);
+  const double weight = (particle_density - m.density) * volume * g;
+  if (weight <= 0.0) return 0.0;
+  double lo = 0.0, hi = weight / single_sphere_beta(m, diameter, 0.0);    // Stokes bound
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (single_sphere_beta(m, diameter, mid) * mid < weight ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}    // namespace lubricated
