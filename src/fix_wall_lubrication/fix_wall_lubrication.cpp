@@ -112,6 +112,7 @@ void FixWallLubrication::post_force(int /*vflag*/)
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
+  const bool at_start = update->setupflag != 0;    // full-step velocities (contact_step.h)
 
   for (double &s : local_sums) s = 0.0;
   sums_reduced = false;
@@ -125,7 +126,7 @@ void FixWallLubrication::post_force(int /*vflag*/)
       const double gap = side * (x[i][axis] - (side == 1 ? lo : hi)) - r;
       const double u_n = side * v[i][axis];
       if (!model.acts(gap, r, u_n)) continue;
-      const lub::NormalForce fn = lub::normal_force(model, gap, r, rmass[i], u_n);
+      const lub::NormalForce fn = lub::normal_force(model, gap, r, rmass[i], u_n, at_start);
       const double force = side * fn.total();
       f[i][axis] += force;
       local_sums[0] += fn.energy;

@@ -146,6 +146,22 @@ inline double contact_acceleration(const ContactStep &cs, double g1, double u)
   return (g2 - 2.0 * g1 + g0) / (dt * dt);
 }
 
+// The same at the start of a run, where engines hold full-step velocities (velocity Verlet's
+// v^n, not v^(n-1/2)) and apply only half a kick before the first position update: the
+// acceleration that makes that first half-step land on the exact trajectory from (g, v).
+inline double contact_acceleration_at_start(const ContactStep &cs, double g, double v)
+{
+  const double dt = cs.dt;
+  double g1;
+  if (g >= 0.0) {
+    if (g + v * dt >= 0.0) return 0.0;
+    g1 = propagate_contact(cs, 0.0, v, dt - g / -v);
+  } else {
+    g1 = propagate_contact(cs, g, v, dt);
+  }
+  return 2.0 * ((g1 - g) / dt - v) / dt;
+}
+
 // Whether contact_acceleration can be non-zero: in overlap, or within a step of it.
 inline bool contact_possible(double g1, double u, double dt)
 {

@@ -59,8 +59,9 @@ struct NormalForce {
   double total() const { return contact + lubrication; }
 };
 
+// at_start: the first force evaluation of a run (velocities are full-step there).
 inline NormalForce normal_force(const NormalModel &m, double gap, double radius,
-                                double reduced_mass, double u_n)
+                                double reduced_mass, double u_n, bool at_start = false)
 {
   NormalForce f;
   if (gap < 0.0) {
@@ -70,18 +71,22 @@ inline NormalForce normal_force(const NormalModel &m, double gap, double radius,
     f.energy = 0.5 * k * overlap * overlap;
   }
   if (m.exact && contact_possible(gap, u_n, m.step.dt))
-    f.contact = reduced_mass * contact_acceleration(m.step, gap, u_n);
+    f.contact = reduced_mass *
+        (at_start ? contact_acceleration_at_start(m.step, gap, u_n)
+                  : contact_acceleration(m.step, gap, u_n));
   if (m.lubrication.active()) {
-    if (m.exact) {
+    const double dt = m.step.dt;
+    const double limit = reduced_mass * std::fabs(u_n);
+    if (m.exact && !at_start) {
       // The film's path integral over the last step (gap - u_n dt -> gap): summed over
       // steps it telescopes to the exact impulse of the continuous model, whatever dt.
       // It may stop the relative motion but never reverse it: |impulse| <= m_e |u_n|.
-      const double dt = m.step.dt;
-      const double limit = reduced_mass * std::fabs(u_n);
       const double impulse = m.lubrication.impulse(gap - u_n * dt, gap, radius);
       f.lubrication = std::max(-limit, std::min(limit, impulse)) / dt;
     } else {
       f.lubrication = -m.lubrication.damping(gap / radius, radius) * u_n;
+      // At a run start only half a kick follows: it may stop the motion, not reverse it.
+      if (m.exact) f.lubrication = std::max(-2.0 * limit / dt, std::min(2.0 * limit / dt, f.lubrication));
     }
   }
   return f;

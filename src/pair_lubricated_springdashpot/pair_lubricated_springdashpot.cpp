@@ -182,6 +182,7 @@ template <bool WET> void PairLubricatedSpringDashpot::eval()
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   const double dt = update->dt;
+  const bool at_start = update->setupflag != 0;    // full-step velocities (contact_step.h)
   const int inum = list->inum;
   const int *ilist = list->ilist;
   const int *numneigh = list->numneigh;
@@ -226,7 +227,8 @@ template <bool WET> void PairLubricatedSpringDashpot::eval()
       const double rinv = 1.0 / r;
       const double u_n = (dvx * delx + dvy * dely + dvz * delz) * rinv;
       const double m_e = lub::reduced_mass(rmass[i], rmass[j]);
-      const lub::NormalForce fn = lub::normal_force(model, r - radsum, lub_radius, m_e, u_n);
+      const lub::NormalForce fn =
+          lub::normal_force(model, r - radsum, lub_radius, m_e, u_n, at_start);
 
       const double fpair = fn.total() * rinv;
       f[i][0] += delx * fpair;
