@@ -66,7 +66,7 @@ def test_energy_and_single_in_overlap(lmp):
     assert lubrication == 0.0
     assert eps == pytest.approx(-d / 1e-3, rel=1e-9)
     # Virial of the pair at rest: P = r F / (3 V), box of 0.02^3.
-    assert result["press"] == pytest.approx((0.002 - d) * contact / (3 * 0.02 ** 3), rel=1e-9)
+    assert result["press"] == pytest.approx((0.002 - d) * -result["fx1"] / (3 * 0.02 ** 3), rel=1e-9)
 
 
 @pytest.mark.parametrize("integration", ["sampled", "exact"])
