@@ -160,24 +160,70 @@ void FixFluidDrag::setup(int vflag)
   post_force(vflag);
 }
 
-int FixFluidDrag::bin_of(const double *x) const
+// Bin centres sit at (k + 1/2) h; a sphere's volume goes to the (up to) 8 nearest centres
+// with trilinear weights, and the solid fraction is read back the same way, which smooths
+// the count noise of small bins. Periodic dimensions wrap, bounded ones clamp.
+int FixFluidDrag::cloud_in_cell(const double *x, int *bins, double *weights) const
 {
-  int index = 0;
-  for (int d = 2; d >= 0; d--) {
-    int b = static_cast<int>((x[d] - domain->boxlo[d]) / domain->prd[d] * nbins[d]);
-    b = b < 0 ? 0 : (b >= nbins[d] ? nbins[d] - 1 : b);
-    index = index * nbins[d] + b;
+  int lo[3], hi[3];
+  double w_hi[3];
+  for (int d = 0; d < 3; d++) {
+    const int n = nbins[d];
+    const double s = (x[d] - domain->boxlo[d]) / domain->prd[d] * n - 0.5;
+    int k = static_cast<int>(std::floor(s));
+    double frac = s - k;
+    if (n == 1) {
+      lo[d] = hi[d] = 0, w_hi[d] = 0.0;
+      continue;
+    }
+    if (domain->periodicity[d]) {
+      lo[d] = ((k % n) + n) % n;
+      hi[d] = (lo[d] + 1) % n;
+    } else {
+      if (k < 0) k = 0, frac = 0.0;
+      if (k > n - 2) k = n - 2, frac = 1.0;
+      lo[d] = k;
+      hi[d] = k + 1;
+    }
+    w_hi[d] = frac < 0.0 ? 0.0 : (frac > 1.0 ? 1.0 : frac);
   }
-  return index;
+  int count = 0;
+  for (int cz = 0; cz < 2; cz++)
+    for (int cy = 0; cy < 2; cy++)
+      for (int cx = 0; cx < 2; cx++) {
+        const double w = (cx ? w_hi[0] : 1.0 - w_hi[0]) * (cy ? w_hi[1] : 1.0 - w_hi[1]) *
+            (cz ? w_hi[2] : 1.0 - w_hi[2]);
+        if (w == 0.0) continue;
+        const int ix = cx ? hi[0] : lo[0], iy = cy ? hi[1] : lo[1], iz = cz ? hi[2] : lo[2];
+        bins[count] = (iz * nbins[1] + iy) * nbins[0] + ix;
+        weights[count++] = w;
+      }
+  return count;
 }
 
-// Solid volume of the group's spheres in each bin over the bin volume, summed over ranks.
+double FixFluidDrag::solid_fraction_at(const double *x) const
+{
+  int bins[8];
+  double weights[8];
+  const int n = cloud_in_cell(x, bins, weights);
+  double phi = 0.0;
+  for (int k = 0; k < n; k++) phi += weights[k] * bin_solid[bins[k]];
+  return phi;
+}
+
+// Solid volume of the group's spheres per bin over the bin volume, summed over ranks.
 void FixFluidDrag::update_solid_fraction()
 {
   std::fill(local_sum.begin(), local_sum.end(), 0.0);
   const int *mask = atom->mask;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (mask[i] & groupbit) local_sum[bin_of(atom->x[i])] += lub::sphere_volume(atom->radius[i]);
+  int bins[8];
+  double weights[8];
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double volume = lub::sphere_volume(atom->radius[i]);
+    const int n = cloud_in_cell(atom->x[i], bins, weights);
+    for (int k = 0; k < n; k++) local_sum[bins[k]] += weights[k] * volume;
+  }
   MPI_Allreduce(local_sum.data(), bin_solid.data(), (int) bin_solid.size(), MPI_DOUBLE, MPI_SUM, world);
   const double bin_volume = domain->prd[0] * domain->prd[1] * (domain->dimension == 3 ? domain->prd[2] : 1.0) /
       bin_solid.size();
@@ -221,7 +267,7 @@ void FixFluidDrag::post_force(int /*vflag*/)
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    const double voidage = needs_fraction() ? 1.0 - bin_solid[bin_of(x[i])] : 1.0;
+    const double voidage = needs_fraction() ? 1.0 - solid_fraction_at(x[i]) : 1.0;
     const double fluid_scale = superficial ? 1.0 / std::max(voidage, model.min_voidage) : 1.0;
     double slip[3], speed2 = 0.0;
     for (int d = 0; d < 3; d++) {

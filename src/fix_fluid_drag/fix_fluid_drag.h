@@ -51,7 +51,9 @@ class FixFluidDrag : public Fix {
   bool totals_reduced = false;
 
   bool needs_fraction() const;
-  int bin_of(const double *x) const;
+  // Cloud-in-cell weights: up to 8 bins around x and their trilinear weights.
+  int cloud_in_cell(const double *x, int *bins, double *weights) const;
+  double solid_fraction_at(const double *x) const;
   void update_solid_fraction();
 };
 
