@@ -60,28 +60,24 @@ inline ContactStep make_contact_step(const SpringDashpot &sd, double dt)
 
 namespace detail {
 
-// Root of f on [lo, hi] with f(lo) > 0 >= f(hi) (Illinois variant of regula falsi).
-template <class F> double falling_root(F f, double lo, double hi)
+// Root of f on [lo, hi] with f(lo) > 0 >= f(hi), by Newton's method from guess, kept inside
+// the shrinking bracket (bisection when a step leaves it). fdf(x, df) returns f, sets f'.
+template <class F> double falling_root(F fdf, double lo, double hi, double guess)
 {
-  double flo = f(lo), fhi = f(hi);
-  if (!(flo > 0.0)) return lo;
-  if (!(fhi <= 0.0)) return hi;
-  int side = 0;
-  for (int it = 0; it < 100 && hi - lo > 1e-15 * hi; ++it) {
-    const double x = (lo * fhi - hi * flo) / (fhi - flo);
-    const double fx = f(x);
-    if (fx > 0.0) {
-      lo = x, flo = fx;
-      if (side == -1) fhi *= 0.5;
-      side = -1;
-    } else {
-      hi = x, fhi = fx;
-      if (side == +1) flo *= 0.5;
-      side = +1;
-    }
+  double df = 0.0;
+  if (!(fdf(lo, df) > 0.0)) return lo;
+  if (!(fdf(hi, df) <= 0.0)) return hi;
+  double x = std::min(std::max(guess, lo), hi);
+  for (int it = 0; it < 60; ++it) {
+    const double fx = fdf(x, df);
     if (fx == 0.0) return x;
+    (fx > 0.0 ? lo : hi) = x;
+    double next = x - fx / df;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::fabs(next - x) <= 1e-15 * hi) return next;
+    x = next;
   }
-  return 0.5 * (lo + hi);
+  return x;
 }
 
 }    // namespace detail
@@ -118,22 +114,32 @@ inline double contact_acceleration(const ContactStep &cs, double g1, double u)
       g2 = propagate_contact(cs, 0.0, u, dt - t_entry);
     } else {
       // Contact ended within the last step: find the exit time s after the previous sample
-      // such that the oscillator from g0 exits at s and flies on to g1.
-      auto excess = [&](double s) {
-        return -std::exp(-a * s) * w * g0 * (dt - s) / std::sin(w * s) - g1;
+      // such that the oscillator from g0 exits at s and flies on to g1:
+      //   exp(-a s) w g0 (dt - s) + g1 sin(w s) = 0  (times -1 below, falling in s).
+      auto excess = [&](double t, double &df) {
+        const double decay = std::exp(-a * t), sn = std::sin(w * t), cs_ = std::cos(w * t);
+        df = decay * w * g0 * (a * (dt - t) + 1.0) - g1 * w * cs_;
+        return -decay * w * g0 * (dt - t) - g1 * sn;
       };
-      const double s = detail::falling_root(excess, 1e-12 * dt, dt);
+      const double s = detail::falling_root(excess, 0.0, dt, dt * -g0 / (g1 - g0));
       const double v_exit = s < 0.5 * dt ? g1 / (dt - s)
                                          : -std::exp(-a * s) * w * g0 / std::sin(w * s);
       return (v_exit - u) / dt;
     }
   } else if (g0 >= 0.0) {
-    // Contact started within the last step, s before now, at the speed v_in of free flight.
-    auto h = [&](double s) { return std::exp(-a * s) * std::sin(w * s) / w; };
-    const double s = detail::falling_root([&](double t) { return -g0 * h(t) - g1 * (dt - t); },
-                                          0.0, dt);
-    const double v_in = s < 0.5 * dt ? -g0 / (dt - s) : g1 / h(s);
-    const double v1 = v_in * std::exp(-a * s) * (std::cos(w * s) - a / w * std::sin(w * s));
+    // Contact started within the last step, s before now, at the speed v_in of free flight:
+    //   g0 h(s) + g1 (dt - s) = 0,  h(s) = exp(-a s) sin(w s) / w  (times -1, falling in s).
+    double decay_s = 1.0, sin_s = 0.0, cos_s = 1.0;
+    auto mismatch = [&](double t, double &df) {
+      decay_s = std::exp(-a * t), sin_s = std::sin(w * t), cos_s = std::cos(w * t);
+      df = -g0 * decay_s * (cos_s - a / w * sin_s) + g1;
+      return -g0 * decay_s * sin_s / w - g1 * (dt - t);
+    };
+    const double s = detail::falling_root(mismatch, 0.0, dt, dt * -g1 / (g0 - g1));
+    double df;
+    mismatch(s, df);
+    const double v_in = s < 0.5 * dt ? -g0 / (dt - s) : g1 * w / (decay_s * sin_s);
+    const double v1 = v_in * decay_s * (cos_s - a / w * sin_s);
     g2 = propagate_contact(cs, g1, v1, dt);
   } else {
     // Sustained contact: the exact two-step recurrence of the damped oscillator.

@@ -71,6 +71,8 @@ struct Lubrication {
   double eps_saturation = 1e-3;    // eps_1
   double eps_release = -1e-2;      // eps_2
   double lambda_activation = 0.0;  // lambda(eps_al) when eps_al is fixed
+  double integral_activation = 0.0;    // antiderivative of lambda at eps_al (fixed eps_al)
+  double lambda_saturated = 0.0;       // lambda(eps_1)
 
   bool active() const { return six_pi_mu > 0.0; }
 
@@ -87,14 +89,13 @@ struct Lubrication {
   {
     const double eps_al = activation_for(radius);
     if (eps >= eps_al) return 0.0;
-    const double lambda_al = grid_spacing > 0.0 ? lambda_of(partner, eps_al) : lambda_activation;
+    const bool fixed = grid_spacing <= 0.0;
+    const double lambda_al = fixed ? lambda_activation : lambda_of(partner, eps_al);
+    const double integral_al = fixed ? integral_activation : lambda_integral_of(partner, eps_al);
     const double e = std::max(eps, eps_saturation);
-    double p = lambda_integral_of(partner, eps_al) - lambda_integral_of(partner, e) -
-        lambda_al * (eps_al - e);
-    if (eps < eps_saturation) {
-      const double below = eps_saturation - std::max(eps, eps_release);
-      p += (lambda_of(partner, eps_saturation) - lambda_al) * below;
-    }
+    double p = integral_al - lambda_integral_of(partner, e) - lambda_al * (eps_al - e);
+    if (eps < eps_saturation)
+      p += (lambda_saturated - lambda_al) * (eps_saturation - std::max(eps, eps_release));
     return p;
   }
 
@@ -130,8 +131,11 @@ inline Lubrication make_lubrication(Partner partner, double mu_f, double eps_act
   lub.grid_spacing = grid_spacing;
   lub.eps_saturation = eps_saturation;
   lub.eps_release = eps_release;
-  if (lub.active() && grid_spacing <= 0.0)
+  if (lub.active() && grid_spacing <= 0.0) {
     lub.lambda_activation = lambda_of(partner, eps_activation);
+    lub.integral_activation = lambda_integral_of(partner, eps_activation);
+  }
+  lub.lambda_saturated = lambda_of(partner, eps_saturation);
   return lub;
 }
 

@@ -16,6 +16,7 @@
 #include "update.h"
 #include "utils.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <string>
@@ -183,6 +184,15 @@ template <bool WET> void PairLubricatedSpringDashpot::eval()
   const int newton_pair = force->newton_pair;
   const double dt = update->dt;
   const bool at_start = update->setupflag != 0;    // full-step velocities (contact_step.h)
+
+  // No pair can close a gap wider than the largest relative displacement of one step, so a
+  // bound from the fastest owned or ghost atom rejects far pairs before any velocity work.
+  double vmax_sq = 0.0;
+  const int nall = atom->nlocal + atom->nghost;
+  for (int k = 0; k < nall; k++)
+    vmax_sq = std::max(vmax_sq, v[k][0] * v[k][0] + v[k][1] * v[k][1] + v[k][2] * v[k][2]);
+  const double margin = 2.0 * std::sqrt(vmax_sq) * dt;
+
   const int inum = list->inum;
   const int *ilist = list->ilist;
   const int *numneigh = list->numneigh;
@@ -204,6 +214,10 @@ template <bool WET> void PairLubricatedSpringDashpot::eval()
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radsum = radi + radius[j];
       const lub::NormalModel &model = models[index(itype, type[j])];
+      if (!WET) {
+        const double near = radsum + margin;
+        if (rsq >= near * near) continue;
+      }
       const double dvx = v[i][0] - v[j][0];
       const double dvy = v[i][1] - v[j][1];
       const double dvz = v[i][2] - v[j][2];
