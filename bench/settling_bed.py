@@ -8,6 +8,7 @@ repeated (the minimum loop time counts, the machine is noisy), on one rank:
   gran/hooke       built-in, same normal stiffness and damping (k = m_e (pi^2 + ln^2 e)/t_c^2,
                    gamma_n = -2 ln e / t_c, m_e = m/2), tangential off (Kt = gammat = xmu = 0)
   plugin dry       pair_style lubricated/springdashpot, pair_coeff * * 0.9 ncontact 8
+  plugin dry sampled  the printed force sampled once per step (integration sampled)
   plugin wet       the same with viscosity 1e-3 activation 0.09375 (film on every close pair)
 Walls: fix wall/gran hooke for the built-in, fix wall/lubrication for the plugin.
 Prints ns per particle-step and the ratios to gran/hooke; writes results.md to --out.
@@ -85,6 +86,8 @@ def styles():
                        "zplane 0.0 NULL"),
         "plugin dry": ("pair_style lubricated/springdashpot\npair_coeff * * 0.9 ncontact 8",
                        "fix floor all wall/lubrication 0.9 ncontact 8 zplane 0.0 NULL"),
+        "plugin dry sampled": ("pair_style lubricated/springdashpot\npair_coeff * * 0.9 ncontact 8 integration sampled",
+                               "fix floor all wall/lubrication 0.9 ncontact 8 integration sampled zplane 0.0 NULL"),
         "plugin wet": (f"pair_style lubricated/springdashpot\npair_coeff * * 0.9 ncontact 8 {wet}",
                        f"fix floor all wall/lubrication 0.9 ncontact 8 {wet} zplane 0.0 NULL"),
     }
@@ -133,7 +136,7 @@ def main():
     out.mkdir(parents=True, exist_ok=True)
     rows = []
     for size in args.sizes:
-        steps = args.steps or max(200, int(4e6 / size))
+        steps = args.steps or max(500, int(2e7 / size))
         natoms, best = bench(size, steps, args.repeats, out)
         ref = best["gran/hooke"]["ns"]
         for name, t in best.items():

@@ -32,6 +32,11 @@
 namespace lubricated {
 
 struct ContactStep {
+  // Entry and exit times within a step depend on the gap ratio only; tabulated guesses
+  // (see make_contact_step) let Newton finish in one or two iterations.
+  static constexpr int table_size = 64;
+  double exit_guess[table_size + 1];     // s / dt against x = r / (1 + r), r = g1 / -g0
+  double entry_guess[table_size + 1];    // s / dt against x = r / (1 + r), r = -g1 / g0
   double dt = 0.0;
   double decay_rate = 0.0;    // a      [1/time]
   double omega = 0.0;         // omega  [1/time]
@@ -41,6 +46,36 @@ struct ContactStep {
 };
 
 constexpr double min_steps_per_contact = 1.5;
+
+namespace detail {
+
+inline double table_lookup(const double *table, int n, double ratio)
+{
+  const double x = ratio / (1.0 + ratio) * n;    // ratio in [0, inf) -> x in [0, n)
+  const int k = std::min(static_cast<int>(x), n - 1);
+  return table[k] + (x - k) * (table[k + 1] - table[k]);
+}
+
+// Root of f on [lo, hi], where the caller guarantees f(lo) > 0 >= f(hi), by Newton's method
+// from guess, kept inside the shrinking bracket (bisection when a step leaves it).
+// fdf(x, df) returns f and sets f'.
+template <class F> double falling_root(F fdf, double lo, double hi, double guess)
+{
+  double df = 0.0;
+  double x = std::min(std::max(guess, lo), hi);
+  for (int it = 0; it < 60; ++it) {
+    const double fx = fdf(x, df);
+    if (fx == 0.0) return x;
+    (fx > 0.0 ? lo : hi) = x;
+    double next = x - fx / df;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::fabs(next - x) <= 1e-14 * hi) return next;
+    x = next;
+  }
+  return x;
+}
+
+}    // namespace detail
 
 inline ContactStep make_contact_step(const SpringDashpot &sd, double dt)
 {
@@ -55,32 +90,25 @@ inline ContactStep make_contact_step(const SpringDashpot &sd, double dt)
   cs.S = std::sin(cs.omega * dt);
   cs.stiffness_step = (1.0 + cs.E * cs.E - 2.0 * cs.E * cs.C) / (dt * dt);
   cs.damping_step = (1.0 - cs.E * cs.E) / dt;
+  // Tabulate the exit and entry times (bisection: once per type pair and time step).
+  const double a = cs.decay_rate, w = cs.omega;
+  for (int k = 0; k <= ContactStep::table_size; ++k) {
+    const double x = static_cast<double>(k) / ContactStep::table_size;
+    const double r = x < 1.0 ? x / (1.0 - x) : 1e300;
+    double lo = 0.0, hi = dt, lo2 = 0.0, hi2 = dt;
+    for (int it = 0; it < 100; ++it) {
+      const double m = 0.5 * (lo + hi), m2 = 0.5 * (lo2 + hi2);
+      // exit: exp(-a s) w (dt - s) - r sin(w s), falling from > 0 at s = 0
+      (std::exp(-a * m) * w * (dt - m) - r * std::sin(w * m) > 0.0 ? lo : hi) = m;
+      // entry: exp(-a s) sin(w s) / w - r (dt - s), rising from < 0 at s = 0
+      (std::exp(-a * m2) * std::sin(w * m2) / w - r * (dt - m2) < 0.0 ? lo2 : hi2) = m2;
+    }
+    cs.exit_guess[k] = 0.5 * (lo + hi);
+    cs.entry_guess[k] = 0.5 * (lo2 + hi2);
+  }
   return cs;
 }
 
-namespace detail {
-
-// Root of f on [lo, hi] with f(lo) > 0 >= f(hi), by Newton's method from guess, kept inside
-// the shrinking bracket (bisection when a step leaves it). fdf(x, df) returns f, sets f'.
-template <class F> double falling_root(F fdf, double lo, double hi, double guess)
-{
-  double df = 0.0;
-  if (!(fdf(lo, df) > 0.0)) return lo;
-  if (!(fdf(hi, df) <= 0.0)) return hi;
-  double x = std::min(std::max(guess, lo), hi);
-  for (int it = 0; it < 60; ++it) {
-    const double fx = fdf(x, df);
-    if (fx == 0.0) return x;
-    (fx > 0.0 ? lo : hi) = x;
-    double next = x - fx / df;
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::fabs(next - x) <= 1e-15 * hi) return next;
-    x = next;
-  }
-  return x;
-}
-
-}    // namespace detail
 
 // Gap after time t, starting in overlap or at contact (g <= 0) with rate v; once the gap
 // reopens the motion continues in free flight with the exit speed.
@@ -89,19 +117,23 @@ inline double propagate_contact(const ContactStep &cs, double g, double v, doubl
   const double a = cs.decay_rate, w = cs.omega;
   const double A = g, B = (v + a * g) / w;    // g(s) = exp(-a s) (A cos ws + B sin ws)
   if (A < 0.0) {
-    const double theta_exit = std::atan2(-A, B);    // first s > 0 with g(s) = 0
+    // First s > 0 with g(s) = 0: w s = atan2(-A, B), where cos = B / rho, sin = -A / rho,
+    // so the exit speed is exp(-a s) w rho.
+    const double theta_exit = std::atan2(-A, B);
     if (theta_exit <= w * t) {
       const double s = theta_exit / w;
-      const double v_exit = std::exp(-a * s) * w * (B * std::cos(theta_exit) - A * std::sin(theta_exit));
-      return v_exit * (t - s);
+      return std::exp(-a * s) * w * std::sqrt(A * A + B * B) * (t - s);
     }
+  } else if (A == 0.0) {
+    // Starting at contact: no exit within t <= dt < t_c (contacts last >= 1.5 steps).
+    return std::exp(-a * t) * B * std::sin(w * t);
   }
   return std::exp(-a * t) * (A * std::cos(w * t) + B * std::sin(w * t));
 }
 
 // Relative normal acceleration (force / m_e, along n) applied over the coming step.
 // g1: gap now; u: normal relative velocity over the last step (> 0 separating).
-inline double contact_acceleration(const ContactStep &cs, double g1, double u)
+__attribute__((noinline)) inline double contact_acceleration(const ContactStep &cs, double g1, double u)
 {
   const double dt = cs.dt, a = cs.decay_rate, w = cs.omega;
   const double g0 = g1 - u * dt;
@@ -121,7 +153,8 @@ inline double contact_acceleration(const ContactStep &cs, double g1, double u)
         df = decay * w * g0 * (a * (dt - t) + 1.0) - g1 * w * cs_;
         return -decay * w * g0 * (dt - t) - g1 * sn;
       };
-      const double s = detail::falling_root(excess, 0.0, dt, dt * -g0 / (g1 - g0));
+      const double s = detail::falling_root(
+          excess, 0.0, dt, detail::table_lookup(cs.exit_guess, ContactStep::table_size, g1 / -g0));
       const double v_exit = s < 0.5 * dt ? g1 / (dt - s)
                                          : -std::exp(-a * s) * w * g0 / std::sin(w * s);
       return (v_exit - u) / dt;
@@ -135,7 +168,9 @@ inline double contact_acceleration(const ContactStep &cs, double g1, double u)
       df = -g0 * decay_s * (cos_s - a / w * sin_s) + g1;
       return -g0 * decay_s * sin_s / w - g1 * (dt - t);
     };
-    const double s = detail::falling_root(mismatch, 0.0, dt, dt * -g1 / (g0 - g1));
+    const double s = detail::falling_root(
+        mismatch, 0.0, dt,
+        g0 > 0.0 ? detail::table_lookup(cs.entry_guess, ContactStep::table_size, -g1 / g0) : dt);
     double df;
     mismatch(s, df);
     const double v_in = s < 0.5 * dt ? -g0 / (dt - s) : g1 * w / (decay_s * sin_s);
@@ -155,7 +190,7 @@ inline double contact_acceleration(const ContactStep &cs, double g1, double u)
 // The same at the start of a run, where engines hold full-step velocities (velocity Verlet's
 // v^n, not v^(n-1/2)) and apply only half a kick before the first position update: the
 // acceleration that makes that first half-step land on the exact trajectory from (g, v).
-inline double contact_acceleration_at_start(const ContactStep &cs, double g, double v)
+__attribute__((noinline)) inline double contact_acceleration_at_start(const ContactStep &cs, double g, double v)
 {
   const double dt = cs.dt;
   double g1;

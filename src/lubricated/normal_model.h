@@ -60,7 +60,7 @@ struct NormalForce {
 };
 
 // at_start: the first force evaluation of a run (velocities are full-step there).
-inline NormalForce normal_force(const NormalModel &m, double gap, double radius,
+__attribute__((always_inline)) inline NormalForce normal_force(const NormalModel &m, double gap, double radius,
                                 double reduced_mass, double u_n, bool at_start = false)
 {
   NormalForce f;
@@ -70,10 +70,16 @@ inline NormalForce normal_force(const NormalModel &m, double gap, double radius,
     if (!m.exact) f.contact = k * overlap - reduced_mass * m.contact.damping_per_mass * u_n;
     f.energy = 0.5 * k * overlap * overlap;
   }
-  if (m.exact && contact_possible(gap, u_n, m.step.dt))
-    f.contact = reduced_mass *
-        (at_start ? contact_acceleration_at_start(m.step, gap, u_n)
-                  : contact_acceleration(m.step, gap, u_n));
+  if (m.exact && contact_possible(gap, u_n, m.step.dt)) {
+    const ContactStep &cs = m.step;
+    const double g0 = gap - u_n * cs.dt;
+    const double g2 = 2.0 * cs.E * cs.C * gap - cs.E * cs.E * g0;
+    if (!at_start && gap < 0.0 && g0 < 0.0 && g2 < 0.0)    // sustained contact, inline
+      f.contact = reduced_mass * (g2 - 2.0 * gap + g0) / (cs.dt * cs.dt);
+    else
+      f.contact = reduced_mass *
+          (at_start ? contact_acceleration_at_start(cs, gap, u_n) : contact_acceleration(cs, gap, u_n));
+  }
   if (m.lubrication.active()) {
     const double dt = m.step.dt;
     const double limit = reduced_mass * std::fabs(u_n);

@@ -54,6 +54,7 @@ void PairLubricatedSpringDashpot::allocate()
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
   coeffs.assign((n + 1) * (n + 1), lub::Coefficients());
   models.assign((n + 1) * (n + 1), lub::NormalModel());
+  max_reach.assign((n + 1) * (n + 1), 0.0);
   maxrad.assign(n + 1, 0.0);
 }
 
@@ -145,6 +146,7 @@ double PairLubricatedSpringDashpot::init_one(int i, int j)
   double reach = 0.0;
   if (c.wet() && maxrad[i] > 0.0 && maxrad[j] > 0.0)
     reach = models[index(i, j)].reach(lub::lubrication_radius_pair(maxrad[i], maxrad[j]));
+  max_reach[index(i, j)] = max_reach[index(j, i)] = reach;
   return maxrad[i] + maxrad[j] + reach;
 }
 
@@ -214,8 +216,9 @@ template <bool WET> void PairLubricatedSpringDashpot::eval()
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radsum = radi + radius[j];
       const lub::NormalModel &model = models[index(itype, type[j])];
-      if (!WET) {
-        const double near = radsum + margin;
+      {
+        // Farther than the film reaches (at most eps_al R_max or 0.75 dx) plus a step: skip.
+        const double near = radsum + margin + (WET ? max_reach[index(itype, type[j])] : 0.0);
         if (rsq >= near * near) continue;
       }
       const double dvx = v[i][0] - v[j][0];

@@ -35,6 +35,7 @@ class PairLubricatedSpringDashpot : public Pair {
   std::vector<lubricated::Coefficients> coeffs;    // per type pair, (ntypes+1)^2
   std::vector<lubricated::NormalModel> models;     // derived from coeffs and dt
   std::vector<double> maxrad;                      // largest radius per type
+  std::vector<double> max_reach;                   // farthest film gap per type pair
   bool any_wet = false;
 
   void allocate();
