@@ -4,7 +4,7 @@ PY     := $(VENV)/bin/python
 BUILD  := build
 JOBS   ?= 2
 
-.PHONY: all setup build demo test test-kernel test-lammps bench clean
+.PHONY: all setup build demo test test-kernel test-lammps bench report fluidized-bed clean
 
 all: build
 
@@ -27,8 +27,17 @@ test-kernel:
 test-lammps:
 	$(PY) -m pytest tests/lammps -q -p no:cacheprovider
 
+# Settling-bed throughput against gran/hooke (bench/RESULTS.md has the last figures).
 bench: build
 	$(PY) bench/settling_bed.py --out $(BUILD)/bench
+
+# Restitution error against run time and stability over N_c, dt and integrator.
+report: build
+	$(PY) bench/restitution_report.py --out $(BUILD)/report
+
+# The 2133-sphere fluidised bed on 2 MPI ranks: dumps and a solid-fraction profile.
+fluidized-bed: build
+	$(PY) examples/fluidized_bed/run_fluidized_bed.py --out $(BUILD)/fluidized_bed
 
 clean:
 	rm -rf $(BUILD)
