@@ -34,7 +34,7 @@ namespace lubricated {
 struct ContactStep {
   // Entry and exit times within a step depend on the gap ratio only; tabulated guesses
   // (see make_contact_step) let Newton finish in one or two iterations.
-  static constexpr int table_size = 64;
+  static constexpr int table_size = 256;
   double exit_guess[table_size + 1];     // s / dt against x = r / (1 + r), r = g1 / -g0
   double entry_guess[table_size + 1];    // s / dt against x = r / (1 + r), r = -g1 / g0
   double dt = 0.0;
@@ -67,11 +67,15 @@ template <class F> double falling_root(F fdf, double lo, double hi, double guess
     const double fx = fdf(x, df);
     if (fx == 0.0) return x;
     (fx > 0.0 ? lo : hi) = x;
-    double next = x - fx / df;
+    const double step = fx / df;
+    // Newton converges quadratically: a step below 1e-8 of the bracket leaves an error
+    // of order 1e-16, so x (whose values fdf has just computed) is the root.
+    if (std::fabs(step) <= 1e-8 * (hi - lo + std::fabs(x))) return x;
+    double next = x - step;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::fabs(next - x) <= 1e-14 * hi) return next;
     x = next;
   }
+  fdf(x, df);    // leave fdf's values at the point returned
   return x;
 }
 
@@ -116,19 +120,12 @@ inline double propagate_contact(const ContactStep &cs, double g, double v, doubl
 {
   const double a = cs.decay_rate, w = cs.omega;
   const double A = g, B = (v + a * g) / w;    // g(s) = exp(-a s) (A cos ws + B sin ws)
-  if (A < 0.0) {
-    // First s > 0 with g(s) = 0: w s = atan2(-A, B), where cos = B / rho, sin = -A / rho,
-    // so the exit speed is exp(-a s) w rho.
-    const double theta_exit = std::atan2(-A, B);
-    if (theta_exit <= w * t) {
-      const double s = theta_exit / w;
-      return std::exp(-a * s) * w * std::sqrt(A * A + B * B) * (t - s);
-    }
-  } else if (A == 0.0) {
-    // Starting at contact: no exit within t <= dt < t_c (contacts last >= 1.5 steps).
-    return std::exp(-a * t) * B * std::sin(w * t);
-  }
-  return std::exp(-a * t) * (A * std::cos(w * t) + B * std::sin(w * t));
+  const double g_t = std::exp(-a * t) * (A * std::cos(w * t) + B * std::sin(w * t));
+  if (g_t < 0.0 || A >= 0.0) return g_t;    // still in contact (an exit would stay apart)
+  // The gap reopened at s: w s = atan2(-A, B), where cos = B / rho and sin = -A / rho,
+  // so the exit speed is exp(-a s) w rho; free flight after that.
+  const double s = std::atan2(-A, B) / w;
+  return std::exp(-a * s) * w * std::sqrt(A * A + B * B) * (t - s);
 }
 
 // Relative normal acceleration (force / m_e, along n) applied over the coming step.
@@ -168,11 +165,10 @@ __attribute__((noinline)) inline double contact_acceleration(const ContactStep &
       df = -g0 * decay_s * (cos_s - a / w * sin_s) + g1;
       return -g0 * decay_s * sin_s / w - g1 * (dt - t);
     };
+    // falling_root returns the last point it evaluated, so decay_s, sin_s, cos_s belong to s.
     const double s = detail::falling_root(
         mismatch, 0.0, dt,
         g0 > 0.0 ? detail::table_lookup(cs.entry_guess, ContactStep::table_size, -g1 / g0) : dt);
-    double df;
-    mismatch(s, df);
     const double v_in = s < 0.5 * dt ? -g0 / (dt - s) : g1 * w / (decay_s * sin_s);
     const double v1 = v_in * decay_s * (cos_s - a / w * sin_s);
     g2 = propagate_contact(cs, g1, v1, dt);

@@ -23,48 +23,68 @@ namespace lubricated {
 
 enum class Partner { particle, wall };
 
-// Brenner / Cox-Brenner expansions as printed in the paper (eqs. 6 and 7).
+// Brenner / Cox-Brenner expansions as printed in the paper (eqs. 6 and 7), both of the form
+//   lambda(eps) = c_inv / eps + c_log ln eps + c_elog eps ln eps + c_0,
+// with the antiderivative
+//   L(eps) = c_inv ln eps + c_log (eps ln eps - eps) + c_elog (eps^2 ln eps / 2 - eps^2 / 4) + c_0 eps.
+struct Expansion {
+  double c_inv, c_log, c_elog, c_0;
+
+  double lambda(double eps) const
+  {
+    const double l = std::log(eps);
+    return c_inv / eps + c_log * l + c_elog * eps * l + c_0;
+  }
+  double integral(double eps) const
+  {
+    const double l = std::log(eps);
+    return c_inv * l + c_log * (eps * l - eps) + c_elog * eps * eps * (0.5 * l - 0.25) + c_0 * eps;
+  }
+};
+
+constexpr Expansion particle_particle_expansion{0.5, -0.45, -3.0 / 56.0, 1.346};
+constexpr Expansion particle_wall_expansion{1.0, -0.2, -1.0 / 21.0, 0.9713};
+
+inline const Expansion &expansion_of(Partner partner)
+{
+  return partner == Partner::wall ? particle_wall_expansion : particle_particle_expansion;
+}
+
 inline double lambda_particle_particle(double eps)
 {
-  const double log_eps = std::log(eps);
-  return 0.5 / eps - 0.45 * log_eps - (3.0 / 56.0) * eps * log_eps + 1.346;
+  return particle_particle_expansion.lambda(eps);
 }
 
 inline double lambda_particle_wall(double eps)
 {
-  const double log_eps = std::log(eps);
-  return 1.0 / eps - 0.2 * log_eps - (1.0 / 21.0) * eps * log_eps + 0.9713;
+  return particle_wall_expansion.lambda(eps);
 }
 
 inline double lambda_of(Partner partner, double eps)
 {
-  return partner == Partner::wall ? lambda_particle_wall(eps) : lambda_particle_particle(eps);
+  return expansion_of(partner).lambda(eps);
 }
 
 // Antiderivatives of the two expansions (d/deps of these is lambda).
 inline double lambda_particle_particle_integral(double eps)
 {
-  const double log_eps = std::log(eps);
-  return 0.5 * log_eps - 0.45 * (eps * log_eps - eps) -
-      (3.0 / 56.0) * (0.5 * eps * eps * log_eps - 0.25 * eps * eps) + 1.346 * eps;
+  return particle_particle_expansion.integral(eps);
 }
 
 inline double lambda_particle_wall_integral(double eps)
 {
-  const double log_eps = std::log(eps);
-  return log_eps - 0.2 * (eps * log_eps - eps) -
-      (1.0 / 21.0) * (0.5 * eps * eps * log_eps - 0.25 * eps * eps) + 0.9713 * eps;
+  return particle_wall_expansion.integral(eps);
 }
 
 inline double lambda_integral_of(Partner partner, double eps)
 {
-  return partner == Partner::wall ? lambda_particle_wall_integral(eps)
-                                  : lambda_particle_particle_integral(eps);
+  return expansion_of(partner).integral(eps);
 }
 
 // Per-type-pair lubrication constants. eps_activation <= 0 marks a dry pair.
 struct Lubrication {
   Partner partner = Partner::particle;
+  Expansion expansion = particle_particle_expansion;
   double six_pi_mu = 0.0;          // 6 pi mu_f            [mass/(length time)]
   double eps_activation = 0.0;     // eps_al (used when grid_spacing == 0)
   double grid_spacing = 0.0;       // dx > 0: eps_al = 0.75 dx / R per contact (Breugem)
@@ -85,26 +105,41 @@ struct Lubrication {
   // Film integral P(eps) = int_eps^inf [c_l(s) / (6 pi mu R)] ds over the zones above:
   // 0 beyond eps_al, growing towards contact, constant below eps_2. The impulse of the film
   // along any path from eps_a to eps_b is exactly 6 pi mu R^2 [P(eps_b) - P(eps_a)].
-  double film_integral(double eps, double radius) const
+  // eps_al, lambda(eps_al) and L(eps_al) are passed in (fixed per type pair, or per contact).
+  double film_integral(double eps, double eps_al, double lambda_al, double integral_al) const
   {
-    const double eps_al = activation_for(radius);
     if (eps >= eps_al) return 0.0;
-    const bool fixed = grid_spacing <= 0.0;
-    const double lambda_al = fixed ? lambda_activation : lambda_of(partner, eps_al);
-    const double integral_al = fixed ? integral_activation : lambda_integral_of(partner, eps_al);
     const double e = std::max(eps, eps_saturation);
-    double p = integral_al - lambda_integral_of(partner, e) - lambda_al * (eps_al - e);
+    double p = integral_al - expansion.integral(e) - lambda_al * (eps_al - e);
     if (eps < eps_saturation)
       p += (lambda_saturated - lambda_al) * (eps_saturation - std::max(eps, eps_release));
     return p;
+  }
+
+  double film_integral(double eps, double radius) const
+  {
+    const double eps_al = activation_for(radius);
+    if (grid_spacing <= 0.0)
+      return film_integral(eps, eps_al, lambda_activation, integral_activation);
+    return film_integral(eps, eps_al, expansion.lambda(eps_al), expansion.integral(eps_al));
   }
 
   // Momentum the film transfers to the pair (along n) while the gap goes from gap_before to
   // gap_after: the path integral of c_l, independent of how the path is split into steps.
   double impulse(double gap_before, double gap_after, double radius) const
   {
+    const double inv_radius = 1.0 / radius;
+    const double before = gap_before * inv_radius, after = gap_after * inv_radius;
+    const double eps_al = activation_for(radius);
+    if (before >= eps_al && after >= eps_al) return 0.0;
+    double lambda_al = lambda_activation, integral_al = integral_activation;
+    if (grid_spacing > 0.0) {
+      lambda_al = expansion.lambda(eps_al);
+      integral_al = expansion.integral(eps_al);
+    }
     return six_pi_mu * radius * radius *
-        (film_integral(gap_after / radius, radius) - film_integral(gap_before / radius, radius));
+        (film_integral(after, eps_al, lambda_al, integral_al) -
+         film_integral(before, eps_al, lambda_al, integral_al));
   }
 
   // Damping coefficient c_l >= 0 such that F_l = -c_l u_n, for normalised gap eps.
@@ -113,9 +148,8 @@ struct Lubrication {
     if (eps <= eps_release) return 0.0;
     const double eps_al = activation_for(radius);
     if (eps >= eps_al) return 0.0;
-    const double lambda_al =
-        grid_spacing > 0.0 ? lambda_of(partner, eps_al) : lambda_activation;
-    const double lambda_eps = lambda_of(partner, std::max(eps, eps_saturation));
+    const double lambda_al = grid_spacing > 0.0 ? expansion.lambda(eps_al) : lambda_activation;
+    const double lambda_eps = expansion.lambda(std::max(eps, eps_saturation));
     return six_pi_mu * radius * (lambda_eps - lambda_al);
   }
 };
@@ -126,6 +160,7 @@ inline Lubrication make_lubrication(Partner partner, double mu_f, double eps_act
 {
   Lubrication lub;
   lub.partner = partner;
+  lub.expansion = expansion_of(partner);
   lub.six_pi_mu = 6.0 * pi * mu_f;
   lub.eps_activation = eps_activation;
   lub.grid_spacing = grid_spacing;
