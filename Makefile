@@ -27,9 +27,11 @@ test-kernel:
 test-lammps:
 	$(PY) -m pytest tests/lammps -q -p no:cacheprovider
 
-# Settling-bed throughput against gran/hooke (bench/RESULTS.md has the last figures).
+# Settling-bed throughput against gran/hooke, fluidised-bed scaling with the drag fix
+# (bench/RESULTS.md and bench/SCALING.md hold the last figures).
 bench: build
 	$(PY) bench/settling_bed.py --out $(BUILD)/bench
+	$(PY) bench/bed_scaling.py --out $(BUILD)/bed_scaling
 
 # Restitution error against run time and stability over N_c, dt and integrator.
 report: build
