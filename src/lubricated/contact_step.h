@@ -35,8 +35,8 @@ struct ContactStep {
   // Entry and exit times within a step depend on the gap ratio only; tabulated guesses
   // (see make_contact_step) let Newton finish in one or two iterations.
   static constexpr int table_size = 256;
-  double exit_guess[table_size + 1];     // s / dt against x = r / (1 + r), r = g1 / -g0
-  double entry_guess[table_size + 1];    // s / dt against x = r / (1 + r), r = -g1 / g0
+  double exit_guess[table_size + 1];     // exit time s against x = r / (1 + r), r = g1 / -g0
+  double entry_guess[table_size + 1];    // entry time s against x = r / (1 + r), r = -g1 / g0
   double dt = 0.0;
   double decay_rate = 0.0;    // a      [1/time]
   double omega = 0.0;         // omega  [1/time]
@@ -49,33 +49,36 @@ constexpr double min_steps_per_contact = 1.5;
 
 namespace detail {
 
+// Quadratic interpolation in a table of n + 1 values over x = ratio / (1 + ratio) in [0, 1].
 inline double table_lookup(const double *table, int n, double ratio)
 {
   const double x = ratio / (1.0 + ratio) * n;    // ratio in [0, inf) -> x in [0, n)
-  const int k = std::min(static_cast<int>(x), n - 1);
-  return table[k] + (x - k) * (table[k + 1] - table[k]);
+  const int k = std::min(static_cast<int>(x), n - 2);
+  const double t = x - k, f0 = table[k], f1 = table[k + 1], f2 = table[k + 2];
+  return f0 + t * (f1 - f0) + 0.5 * t * (t - 1.0) * (f2 - 2.0 * f1 + f0);
 }
 
 // Root of f on [lo, hi], where the caller guarantees f(lo) > 0 >= f(hi), by Newton's method
 // from guess, kept inside the shrinking bracket (bisection when a step leaves it).
-// fdf(x, df) returns f and sets f'.
-template <class F> double falling_root(F fdf, double lo, double hi, double guess)
+// fdf(x, df) returns f and sets f'. Newton converges quadratically, so once a step is below
+// 1e-7 of the bracket the stepped point is the root to ~1e-14; evaluated_at is the last point
+// fdf saw (callers that reuse fdf's side values correct them to first order).
+template <class F> double falling_root(F fdf, double lo, double hi, double guess, double &evaluated_at)
 {
   double df = 0.0;
   double x = std::min(std::max(guess, lo), hi);
+  const double tolerance = 1e-7 * (hi - lo);
   for (int it = 0; it < 60; ++it) {
     const double fx = fdf(x, df);
+    evaluated_at = x;
     if (fx == 0.0) return x;
     (fx > 0.0 ? lo : hi) = x;
     const double step = fx / df;
-    // Newton converges quadratically: a step below 1e-8 of the bracket leaves an error
-    // of order 1e-16, so x (whose values fdf has just computed) is the root.
-    if (std::fabs(step) <= 1e-8 * (hi - lo + std::fabs(x))) return x;
     double next = x - step;
+    if (std::fabs(step) <= tolerance && next >= lo && next <= hi) return next;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     x = next;
   }
-  fdf(x, df);    // leave fdf's values at the point returned
   return x;
 }
 
@@ -116,16 +119,22 @@ inline ContactStep make_contact_step(const SpringDashpot &sd, double dt)
 
 // Gap after time t, starting in overlap or at contact (g <= 0) with rate v; once the gap
 // reopens the motion continues in free flight with the exit speed.
+// Gap after time t for a contact (g < 0) known to reopen within t: w s = atan2(-A, B) at the
+// exit, where cos = B / rho and sin = -A / rho, so the exit speed is exp(-a s) w rho; free
+// flight after that.
+inline double exit_and_fly(const ContactStep &cs, double A, double B, double t)
+{
+  const double s = std::atan2(-A, B) / cs.omega;
+  return std::exp(-cs.decay_rate * s) * cs.omega * std::sqrt(A * A + B * B) * (t - s);
+}
+
 inline double propagate_contact(const ContactStep &cs, double g, double v, double t)
 {
   const double a = cs.decay_rate, w = cs.omega;
   const double A = g, B = (v + a * g) / w;    // g(s) = exp(-a s) (A cos ws + B sin ws)
   const double g_t = std::exp(-a * t) * (A * std::cos(w * t) + B * std::sin(w * t));
   if (g_t < 0.0 || A >= 0.0) return g_t;    // still in contact (an exit would stay apart)
-  // The gap reopened at s: w s = atan2(-A, B), where cos = B / rho and sin = -A / rho,
-  // so the exit speed is exp(-a s) w rho; free flight after that.
-  const double s = std::atan2(-A, B) / w;
-  return std::exp(-a * s) * w * std::sqrt(A * A + B * B) * (t - s);
+  return exit_and_fly(cs, A, B, t);
 }
 
 // Relative normal acceleration (force / m_e, along n) applied over the coming step.
@@ -150,8 +159,10 @@ __attribute__((noinline)) inline double contact_acceleration(const ContactStep &
         df = decay * w * g0 * (a * (dt - t) + 1.0) - g1 * w * cs_;
         return -decay * w * g0 * (dt - t) - g1 * sn;
       };
+      double evaluated_at;
       const double s = detail::falling_root(
-          excess, 0.0, dt, detail::table_lookup(cs.exit_guess, ContactStep::table_size, g1 / -g0));
+          excess, 0.0, dt, detail::table_lookup(cs.exit_guess, ContactStep::table_size, g1 / -g0),
+          evaluated_at);
       const double v_exit = s < 0.5 * dt ? g1 / (dt - s)
                                          : -std::exp(-a * s) * w * g0 / std::sin(w * s);
       return (v_exit - u) / dt;
@@ -165,20 +176,25 @@ __attribute__((noinline)) inline double contact_acceleration(const ContactStep &
       df = -g0 * decay_s * (cos_s - a / w * sin_s) + g1;
       return -g0 * decay_s * sin_s / w - g1 * (dt - t);
     };
-    // falling_root returns the last point it evaluated, so decay_s, sin_s, cos_s belong to s.
+    double evaluated_at;
     const double s = detail::falling_root(
         mismatch, 0.0, dt,
-        g0 > 0.0 ? detail::table_lookup(cs.entry_guess, ContactStep::table_size, -g1 / g0) : dt);
+        g0 > 0.0 ? detail::table_lookup(cs.entry_guess, ContactStep::table_size, -g1 / g0) : dt,
+        evaluated_at);
+    {    // move decay_s, sin_s, cos_s from the last evaluated point to s (first order)
+      const double shift = s - evaluated_at;
+      decay_s *= 1.0 - a * shift;
+      const double sin_old = sin_s;
+      sin_s += w * shift * cos_s;
+      cos_s -= w * shift * sin_old;
+    }
     const double v_in = s < 0.5 * dt ? -g0 / (dt - s) : g1 * w / (decay_s * sin_s);
     const double v1 = v_in * decay_s * (cos_s - a / w * sin_s);
     g2 = propagate_contact(cs, g1, v1, dt);
   } else {
     // Sustained contact: the exact two-step recurrence of the damped oscillator.
     g2 = 2.0 * cs.E * cs.C * g1 - cs.E * cs.E * g0;
-    if (g2 >= 0.0 && cs.S > 1e-12) {
-      const double B = (g1 * cs.C - g0 * cs.E) / cs.S;
-      g2 = propagate_contact(cs, g1, -a * g1 + w * B, dt);
-    }
+    if (g2 >= 0.0 && cs.S > 1e-12) g2 = exit_and_fly(cs, g1, (g1 * cs.C - g0 * cs.E) / cs.S, dt);
   }
   return (g2 - 2.0 * g1 + g0) / (dt * dt);
 }
