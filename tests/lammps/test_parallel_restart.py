@@ -38,17 +38,23 @@ def test_restart_continues_the_run(lmp, nprocs):
     """run 300; write_restart; run 300  ==  read_restart; run 300 (pair_coeff from the file)."""
     reference = lmp(chain(steps=300, extra_run="write_restart mid.restart\nrun 300") + dump_state(),
                     nprocs=nprocs)
-    restarted = lmp(f"""plugin load ${{plugin}}
+    restarted = lmp(continue_from_restart("fix nve all nve/sphere"), nprocs=nprocs, name="in.restart")
+    assert "pair_coeff" not in (lmp.dir / "in.restart").read_text()
+    assert_same_state(reference, restarted)
+
+
+def continue_from_restart(integrator_fix):
+    """read_restart mid.restart, the fixes again (integrator_fix is the whole fix line), run 300."""
+    mu = 2.0 / 9.0 * 8000 * 1e-3 * 0.1 / 100
+    return f"""plugin load ${{plugin}}
 read_restart mid.restart
 comm_modify vel yes
-fix walls all wall/lubrication 0.7 viscosity {2.0 / 9.0 * 8000 * 1e-3 * 0.1 / 100} grid 1.25e-4 xplane -0.008 0.008
-fix nve all nve/sphere
+fix walls all wall/lubrication 0.7 viscosity {mu} grid 1.25e-4 xplane -0.008 0.008
+{integrator_fix}
 timestep {0.005 * 1e-3 / 0.1}
 neighbor {0.3e-3} bin
 run 300
-""" + dump_state(), nprocs=nprocs, name="in.restart")
-    assert "pair_coeff" not in (lmp.dir / "in.restart").read_text()
-    assert_same_state(reference, restarted)
+""" + dump_state()
 
 
 @pytest.mark.parametrize("nprocs", [1, 2])
@@ -59,24 +65,9 @@ def test_midpoint_integrator_restarts_and_runs_in_parallel(lmp, nprocs):
     reference = lmp(script + dump_state(), nprocs=nprocs)
     serial = lmp(script + dump_state(), nprocs=1)
     assert_same_state(reference, serial)
-    restarted = lmp(f"""plugin load ${{plugin}}
-read_restart mid.restart
-comm_modify vel yes
-fix walls all wall/lubrication 0.7 viscosity {2.0 / 9.0 * 8000 * 1e-3 * 0.1 / 100} grid 1.25e-4 xplane -0.008 0.008
-fix nve all nve/sphere/midpoint
-timestep {0.005 * 1e-3 / 0.1}
-neighbor {0.3e-3} bin
-run 300
-""" + dump_state(), nprocs=nprocs, name="in.restart")
+    restarted = lmp(continue_from_restart("fix nve all nve/sphere/midpoint"), nprocs=nprocs,
+                    name="in.restart")
     assert_same_state(reference, restarted)
-    # Without the stored V^(n-1) the continuation would differ: the test can fail.
-    fresh = lmp(f"""plugin load ${{plugin}}
-read_restart mid.restart
-comm_modify vel yes
-fix walls all wall/lubrication 0.7 viscosity {2.0 / 9.0 * 8000 * 1e-3 * 0.1 / 100} grid 1.25e-4 xplane -0.008 0.008
-fix other all nve/sphere/midpoint
-timestep {0.005 * 1e-3 / 0.1}
-neighbor {0.3e-3} bin
-run 300
-""" + dump_state(), nprocs=nprocs, name="in.fresh")
+    # Without the stored V^(n-1) (a fix of another ID) the continuation differs: the test can fail.
+    fresh = lmp(continue_from_restart("fix other all nve/sphere/midpoint"), nprocs=nprocs, name="in.fresh")
     assert any(fresh[k] != pytest.approx(reference[k], rel=1e-10, abs=1e-13) for k in reference)
