@@ -169,7 +169,7 @@ def summary(rows, map_rows):
               "round-off for every N_c >= 1 and impact phase; the film can stop but never reverse a "
               "relative motion, so no setting is unstable.",
               "- Wet: give the contact a fixed duration, `tcontact` = 0.04 R/U (U the typical impact "
-              "speed), with any dt such that N_c = t_c/dt >= 2; the overlap reached then no longer "
+              "speed), with any dt such that N_c = t_c/dt >= 4; the overlap reached then no longer "
               "scales with dt, and e/e_d stays within 0.05 of exp(-35/St) for St in [50, 1000]. Below "
               "St = 50 the model itself (the paper's film law) falls under the law (no rebound below "
               "St = 20), whatever the numerics.",

@@ -14,6 +14,7 @@
 #include "fix_nve_sphere_midpoint.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "error.h"
 #include "memory.h"
 #include "update.h"
@@ -35,6 +36,7 @@ FixNVESphereMidpoint::FixNVESphereMidpoint(LAMMPS *lmp, int narg, char **arg) :
   time_integrate = 1;
   restart_peratom = 1;
   maxexchange = NVALUES;
+  comm_forward = 3;
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -52,7 +54,36 @@ FixNVESphereMidpoint::~FixNVESphereMidpoint()
 
 int FixNVESphereMidpoint::setmask()
 {
-  return INITIAL_INTEGRATE | FINAL_INTEGRATE;
+  return INITIAL_INTEGRATE | FINAL_INTEGRATE | PRE_FORCE;
+}
+
+// Ghost atoms get V^n once the neighbor lists and ghosts of this step exist.
+void FixNVESphereMidpoint::setup_pre_force(int /*vflag*/)
+{
+  // Before the first step V^n is the current velocity.
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int d = 0; d < 3; d++) state[i][6 + d] = atom->v[i][d];
+  comm->forward_comm(this);
+}
+
+void FixNVESphereMidpoint::pre_force(int /*vflag*/)
+{
+  comm->forward_comm(this);
+}
+
+int FixNVESphereMidpoint::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++)
+    for (int d = 0; d < 3; d++) buf[m++] = state[list[k]][6 + d];
+  return m;
+}
+
+void FixNVESphereMidpoint::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int d = 0; d < 3; d++) state[i][6 + d] = buf[m++];
 }
 
 void FixNVESphereMidpoint::init()

@@ -19,6 +19,8 @@ class FixNVESphereMidpoint : public Fix {
 
   int setmask() override;
   void init() override;
+  void setup_pre_force(int) override;
+  void pre_force(int) override;
   void initial_integrate(int) override;
   void final_integrate() override;
   void reset_dt() override;
@@ -27,12 +29,20 @@ class FixNVESphereMidpoint : public Fix {
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
   void set_arrays(int) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
   int pack_restart(int, double *) override;
   void unpack_restart(int, int) override;
   int size_restart(int) override;
   int maxsize_restart() override;
+
+ public:
+  // V^n of owned and ghost atoms during a step: the velocity over the last step of the
+  // force-evaluation points X~ (X~^n - X~^(n-1) = dt V^n), which the step-exact contact of
+  // pair_style lubricated/springdashpot needs in place of the extrapolated V~.
+  const double *step_velocity(int i) const { return state[i] + 6; }
 
  protected:
   // Per atom: 0-2 V^(n-1), 3-5 omega^(n-1) between steps; 6-8 V^n, 9-11 omega^n within one.

@@ -8,10 +8,13 @@
 
 #include "fix_wall_lubrication.h"
 
+#include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "modify.h"
 #include "update.h"
 #include "utils.h"
 
@@ -80,6 +83,11 @@ void FixWallLubrication::init()
   const std::string advice = lub::time_step_warning(coeffs, update->dt);
   if (!advice.empty() && comm->me == 0) error->warning(FLERR, "{}: {}", STYLE, advice);
   reset_dt();
+  // Under fix nve/sphere/midpoint the step-exact integration uses the velocity over the
+  // last step, which that fix provides (see pair_style lubricated/springdashpot).
+  midpoint = nullptr;
+  for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
+    midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
 }
 
 // k = m (pi^2 + ln^2 e_d) / (N_c dt)^2 follows the time step when N_c is given.
@@ -112,7 +120,7 @@ void FixWallLubrication::post_force(int /*vflag*/)
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-  const bool at_start = update->setupflag != 0;    // full-step velocities (contact_step.h)
+  const bool at_start = update->setupflag != 0 && !midpoint;    // see contact_step.h
 
   for (double &s : local_sums) s = 0.0;
   sums_reduced = false;
@@ -124,7 +132,8 @@ void FixWallLubrication::post_force(int /*vflag*/)
     for (int side = 1; side >= -1; side -= 2) {
       if (side == 1 ? !has_lo : !has_hi) continue;
       const double gap = side * (x[i][axis] - (side == 1 ? lo : hi)) - r;
-      const double u_n = side * v[i][axis];
+      const double u_n =
+          side * (midpoint && model.exact ? midpoint->step_velocity(i)[axis] : v[i][axis]);
       if (!model.acts(gap, r, u_n)) continue;
       const lub::NormalForce fn = lub::normal_force(model, gap, r, rmass[i], u_n, at_start);
       const double force = side * fn.total();

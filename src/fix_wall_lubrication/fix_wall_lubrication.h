@@ -36,6 +36,7 @@ class FixWallLubrication : public Fix {
   double local_sums[4] = {0.0, 0.0, 0.0, 0.0};    // energy, force on the group x y z
   double global_sums[4] = {0.0, 0.0, 0.0, 0.0};
   bool sums_reduced = false;
+  class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
 };
 
 }    // namespace LAMMPS_NS

@@ -4,6 +4,8 @@
 
 #include "pair_lubricated_springdashpot.h"
 
+#include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
@@ -116,6 +118,12 @@ void PairLubricatedSpringDashpot::init_style()
     for (const auto &msg : advice)
       if (!msg.empty()) error->warning(FLERR, "{}: {}", STYLE, msg);
 
+  // Under fix nve/sphere/midpoint forces are evaluated with the extrapolated V~; the step-exact
+  // integration needs the velocity over the last step instead, which that fix provides.
+  midpoint = nullptr;
+  for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
+    midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
+
   // A dry model acts only in contact: a radius-based list is enough and cheapest. The film
   // acts beyond contact, where radius-based lists lose pairs on rebuild (LAMMPS PR #4685),
   // so a wet model asks for a list with per-type cutoffs that cover the whole film.
@@ -185,14 +193,19 @@ template <bool WET> void PairLubricatedSpringDashpot::eval()
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   const double dt = update->dt;
-  const bool at_start = update->setupflag != 0;    // full-step velocities (contact_step.h)
+  // Full-step velocities and half a kick at a run start (contact_step.h); the midpoint
+  // integrator discards the set-up forces, so it needs no such treatment.
+  const bool at_start = update->setupflag != 0 && !midpoint;
 
   // No pair can close a gap wider than the largest relative displacement of one step, so a
   // bound from the fastest owned or ghost atom rejects far pairs before any velocity work.
   double vmax_sq = 0.0;
   const int nall = atom->nlocal + atom->nghost;
-  for (int k = 0; k < nall; k++)
-    vmax_sq = std::max(vmax_sq, v[k][0] * v[k][0] + v[k][1] * v[k][1] + v[k][2] * v[k][2]);
+  for (int k = 0; k < nall; k++) {
+    const double *vk = midpoint ? midpoint->step_velocity(k) : v[k];
+    vmax_sq = std::max(vmax_sq, std::max(vk[0] * vk[0] + vk[1] * vk[1] + vk[2] * vk[2],
+                                         v[k][0] * v[k][0] + v[k][1] * v[k][1] + v[k][2] * v[k][2]));
+  }
   const double margin = 2.0 * std::sqrt(vmax_sq) * dt;
 
   const int inum = list->inum;
@@ -221,9 +234,11 @@ template <bool WET> void PairLubricatedSpringDashpot::eval()
         const double near = radsum + margin + (WET ? max_reach[index(itype, type[j])] : 0.0);
         if (rsq >= near * near) continue;
       }
-      const double dvx = v[i][0] - v[j][0];
-      const double dvy = v[i][1] - v[j][1];
-      const double dvz = v[i][2] - v[j][2];
+      const double *vi = v[i], *vj = v[j];
+      if (midpoint && model.exact) vi = midpoint->step_velocity(i), vj = midpoint->step_velocity(j);
+      const double dvx = vi[0] - vj[0];
+      const double dvy = vi[1] - vj[1];
+      const double dvz = vi[2] - vj[2];
 
       double lub_radius = 0.0, reach = 0.0;
       if (WET && model.lubrication.active()) {

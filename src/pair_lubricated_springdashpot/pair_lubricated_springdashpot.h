@@ -37,6 +37,7 @@ class PairLubricatedSpringDashpot : public Pair {
   std::vector<double> maxrad;                      // largest radius per type
   std::vector<double> max_reach;                   // farthest film gap per type pair
   bool any_wet = false;
+  class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
 
   void allocate();
   int ntypes_alloc = 0;

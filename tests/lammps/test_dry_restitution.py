@@ -44,6 +44,14 @@ def test_tcontact_sets_duration_in_time_units(lmp):
     check(result, 0.5, ncontact=12)
 
 
+@pytest.mark.parametrize("e_dry", E_DRY)
+@pytest.mark.parametrize("scene", ["wall", "pair"])
+def test_papers_integrator_also_gives_e_dry(lmp, e_dry, scene):
+    """fix nve/sphere/midpoint (the paper's scheme) with the step-exact contact, N_c = 8."""
+    build = scenes.wall_bounce if scene == "wall" else scenes.pair_bounce
+    check(lmp(build(e_dry, dt_ru=0.005, integrator="nve/sphere/midpoint")), e_dry)
+
+
 def test_sampled_integration_is_the_papers_force(lmp):
     """The printed force sampled once per step misses e_d at e_d = 0.1 (why 'exact' is the default)."""
     result = lmp(scenes.wall_bounce(0.1, dt_ru=0.005, extra="integration sampled"))
