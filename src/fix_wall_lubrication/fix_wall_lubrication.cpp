@@ -78,6 +78,10 @@ int FixWallLubrication::setmask()
 
 void FixWallLubrication::init()
 {
+  if (comm->me == 0)
+    utils::logmesg(lmp, "{}: e_d = {}, t_c = {:.6g} ({:.3g} steps), {}\n", STYLE, coeffs.e_dry,
+                   coeffs.contact_time(update->dt), coeffs.steps_per_contact(update->dt),
+                   coeffs.wet() ? "film mu_f = " + std::to_string(coeffs.viscosity) : std::string("dry"));
   const std::string problem = lub::validate_time_step(coeffs, update->dt);
   if (!problem.empty()) error->all(FLERR, "{}: {}", STYLE, problem);
   const std::string advice = lub::time_step_warning(coeffs, update->dt);

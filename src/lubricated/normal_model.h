@@ -6,7 +6,8 @@
 //   n     unit normal pointing from the partner (particle j or the wall) to particle i;
 //   gap   surface separation h = |x_i - x_j| - R_i - R_j (wall: distance - R_i), < 0 in overlap;
 //   u_n   (v_i - v_j) . n, > 0 when the surfaces separate; overlap rate d_dot = -u_n;
-//         engines pass the velocity they hold at force time (velocity Verlet: mid-step);
+//         the velocity over the last step of the force-evaluation points: velocity
+//         Verlet's mid-step velocity, V^n under fix nve/sphere/midpoint;
 //   m_e   reduced mass m_i m_j / (m_i + m_j); m_i for a wall;
 //   force on i = (contact + lubrication) n, on j the opposite; energy = k d^2 / 2.
 #pragma once

@@ -149,6 +149,16 @@ double PairLubricatedSpringDashpot::init_one(int i, int j)
   const lub::Coefficients &c = coeffs[index(i, j)];
   models[index(i, j)] = models[index(j, i)] =
       lub::make_normal_model(c, lub::Partner::particle, update->dt);
+  if (comm->me == 0) {
+    // Report what was derived (k and c per unit reduced mass, the contact resolution).
+    const lub::NormalModel &m = models[index(i, j)];
+    utils::logmesg(lmp, "{} types {} {}: e_d = {}, t_c = {:.6g} ({:.3g} steps), k/m_e = {:.6g}, "
+                   "c/m_e = {:.6g}, {}{}\n", STYLE, i, j, c.e_dry, c.contact_time(update->dt),
+                   c.steps_per_contact(update->dt), m.contact.stiffness_per_mass,
+                   m.contact.damping_per_mass,
+                   c.wet() ? fmt::format("film mu_f = {}, ", c.viscosity) : std::string("dry, "),
+                   c.exact_contact ? "integration exact" : "integration sampled");
+  }
 
   // The film of the largest pair of these types reaches farthest.
   double reach = 0.0;
