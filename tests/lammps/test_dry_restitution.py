@@ -56,3 +56,15 @@ def test_sampled_integration_is_the_papers_force(lmp):
     """The printed force sampled once per step misses e_d at e_d = 0.1 (why 'exact' is the default)."""
     result = lmp(scenes.wall_bounce(0.1, dt_ru=0.005, extra="integration sampled"))
     assert abs(result["e"] - 0.1) > 0.01 * 0.1
+
+
+def test_coefficients_per_type_pair(lmp):
+    """Types 1 and 2 with their own e_d; a 1-2 collision uses the 1 2 coefficients, and a wet
+    1 1 pair next to dry pairs leaves the dry ones dry."""
+    script = scenes.pair_bounce(0.9, dt_ru=0.005).replace("create_box 1 box", "create_box 2 box").replace(
+        "set atom 2 diameter", "set atom 2 type 2\nset atom 2 diameter").replace(
+        "pair_coeff * * 0.9 ncontact 8", "pair_coeff 1 1 0.9 viscosity 1e-3 activation 0.09375\n"
+        "pair_coeff 2 2 0.5\npair_coeff 1 2 0.3 ncontact 8")
+    result = lmp(script)
+    assert result["e"] == pytest.approx(0.3, rel=1e-6)
+    assert "types 1 2: e_d = 0.3" in lmp.log and "film" in lmp.log
