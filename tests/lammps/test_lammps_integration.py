@@ -136,3 +136,33 @@ def test_film_pairs_survive_any_skin(lmp, newton):
                                   mass_ratio=0.125))
     assert wide["e"] < 0.9 * 0.95            # the film acted
     assert tiny["e"] == pytest.approx(wide["e"], rel=1e-10)
+
+
+@pytest.mark.parametrize("wet", ["", "viscosity 1e-3 activation 0.09375"])
+def test_fix_pour_into_an_empty_box(lmp, wet):
+    """No atoms at the start: the cutoff comes from the radius fix pour will insert."""
+    script = f"""plugin load ${{plugin}}
+units si
+atom_style sphere
+boundary p p f
+comm_modify vel yes
+region box block 0 0.02 0 0.02 0 0.05
+create_box 1 box
+pair_style lubricated/springdashpot
+pair_coeff * * 0.9 {wet}
+fix floor all wall/lubrication 0.9 zplane 0.0 NULL
+fix nve all nve/sphere
+fix g all gravity 9.81 vector 0 0 -1
+region ins block 0 0.02 0 0.02 0.03 0.045
+fix p all pour 100 1 4767 region ins diam one 0.002 dens 2500 2500
+timestep 2e-5
+run 6000
+print "RESULT n $(atoms)"
+print "RESULT ztop $(bound(all,zmax))"
+"""
+    result = lmp(script)
+    assert result["n"] == 100
+    # 2 R + (film: eps_al R) + the default SI skin of 1 mm
+    cutoff = 0.002 + (0.09375e-3 if wet else 0.0) + 0.001
+    assert f"master list distance cutoff = {cutoff:.6g}" in lmp.log
+    assert result["ztop"] < 0.03
