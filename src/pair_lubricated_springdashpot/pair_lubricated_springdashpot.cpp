@@ -257,11 +257,12 @@ template <bool WET> void PairLubricatedSpringDashpot::eval()
       }
       const double outer = radsum + reach;
       if (rsq >= outer * outer) {
-        // Apart and out of the film: only a contact starting within a step can act,
-        // gap < |u_n| dt, i.e. rsq - |dv.del| dt < radsum r (tested without a sqrt).
+        // Apart and out of the film: only a contact starting, or a film entered or left,
+        // within a step can act: gap < reach + |u_n| dt, i.e. rsq - |dv.del| dt < outer r
+        // (tested without a sqrt).
         if (!model.exact) continue;
         const double s = rsq - std::fabs(dvx * delx + dvy * dely + dvz * delz) * dt;
-        if (s > 0.0 && s * s >= radsum * radsum * rsq) continue;
+        if (s > 0.0 && s * s >= outer * outer * rsq) continue;
       }
       if (rsq == 0.0) continue;    // coincident centres: no normal direction is defined
 
