@@ -14,6 +14,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "memory.h"
 #include "modify.h"
 #include "update.h"
 #include "utils.h"
@@ -69,6 +70,28 @@ FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) : Fix(
   extvector = 1;
   energy_global_flag = 1;
   dynamic_group_allow = 1;
+
+  if (coeffs.tangential() && !(atom->omega_flag && atom->torque_flag))
+    error->all(FLERR, "{} with friction, rolling or shearfilm requires per-atom omega and torque "
+               "(atom_style sphere)", STYLE);
+  if (keeps_history()) {
+    restart_peratom = 1;
+    create_attribute = 1;
+    maxexchange = HISTORY_SIZE;
+    grow_arrays(atom->nmax);
+    for (int i = 0; i < atom->nmax; i++) set_arrays(i);
+    atom->add_callback(Atom::GROW);
+    atom->add_callback(Atom::RESTART);
+  }
+}
+
+FixWallLubrication::~FixWallLubrication()
+{
+  if (keeps_history()) {
+    atom->delete_callback(id, Atom::GROW);
+    atom->delete_callback(id, Atom::RESTART);
+  }
+  memory->destroy(history);
 }
 
 int FixWallLubrication::setmask()
@@ -98,6 +121,7 @@ void FixWallLubrication::init()
 void FixWallLubrication::reset_dt()
 {
   model = lub::make_normal_model(coeffs, lub::Partner::wall, update->dt);
+  tmodel = lub::make_tangential_model(coeffs, update->dt);
 }
 
 void FixWallLubrication::setup(int vflag)
@@ -125,6 +149,7 @@ void FixWallLubrication::post_force(int /*vflag*/)
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
   const bool at_start = update->setupflag != 0 && !midpoint;    // see contact_step.h
+  const bool tangential_on = tmodel.active();
 
   for (double &s : local_sums) s = 0.0;
   sums_reduced = false;
@@ -138,14 +163,122 @@ void FixWallLubrication::post_force(int /*vflag*/)
       const double gap = side * (x[i][axis] - (side == 1 ? lo : hi)) - r;
       const double u_n =
           side * (midpoint && model.exact ? midpoint->step_velocity(i)[axis] : v[i][axis]);
-      if (!model.acts(gap, r, u_n)) continue;
+      if (!model.acts(gap, r, u_n)) {
+        if (history && history[i][(side == 1 ? 0 : HISTORY_PER_WALL) + 3] != 0.0)
+          for (int k = 0; k < HISTORY_PER_WALL; k++)
+            history[i][(side == 1 ? 0 : HISTORY_PER_WALL) + k] = 0.0;
+        continue;
+      }
       const lub::NormalForce fn = lub::normal_force(model, gap, r, rmass[i], u_n, at_start);
       const double force = side * fn.total();
       f[i][axis] += force;
       local_sums[0] += fn.energy;
       local_sums[1 + axis] += force;
+      if (tangential_on) {
+        double ft[3] = {0.0, 0.0, 0.0}, torque[3] = {0.0, 0.0, 0.0};
+        tangential(i, side, gap, u_n, fn.contact, ft, torque);
+        for (int d = 0; d < 3; d++) {
+          f[i][d] += ft[d];
+          atom->torque[i][d] += torque[d];
+          local_sums[1 + d] += ft[d];
+        }
+      }
     }
   }
+}
+
+// Tangential force and torque on i from the wall on this side (tangential.h, m_e = m).
+void FixWallLubrication::tangential(int i, int side, double gap, double u_n, double normal_force,
+                                    double *force, double *torque)
+{
+  const double r = atom->radius[i], m = atom->rmass[i];
+  const double *v = atom->v[i], *w = atom->omega[i];
+  lub::Vec3 n;
+  (axis == 0 ? n.x : axis == 1 ? n.y : n.z) = side;
+  const lub::Vec3 omega{w[0], w[1], w[2]};
+  const lub::Vec3 s = lub::tangential_part(
+      lub::minus(lub::Vec3{v[0], v[1], v[2]}, lub::cross(lub::scaled(omega, r), n)), n);
+  const double m_t = lub::tangential_mass_ratio * m;
+
+  lub::Vec3 f;
+  if (history) {
+    double *h = history[i] + (side == 1 ? 0 : HISTORY_PER_WALL);
+    if (tmodel.contact_active() && lub::tangential_in_contact(gap)) {
+      const double fraction = h[3] != 0.0 ? 1.0 : lub::first_contact_fraction(gap, u_n, tmodel.dt);
+      lub::Vec3 delta{h[0], h[1], h[2]};
+      f = lub::tangential_contact_force(tmodel, delta, n, s, m_t, normal_force, fraction);
+      h[0] = delta.x, h[1] = delta.y, h[2] = delta.z, h[3] = 1.0;
+    } else if (h[3] != 0.0) {
+      h[0] = h[1] = h[2] = h[3] = 0.0;
+    }
+  }
+  if (tmodel.film_active())
+    f = lub::plus(f, lub::shear_film_force(tmodel, s, gap / r, model.lubrication.activation_for(r),
+                                           model.lubrication.eps_saturation,
+                                           model.lubrication.eps_release, r, m_t));
+  lub::Vec3 roll;
+  if (tmodel.rolling_active() && gap < 0.0)
+    roll = lub::rolling_torque(tmodel, n, omega, r, 0.4 * m * r * r, normal_force);
+  const lub::Vec3 nxf = lub::cross(n, f);
+  force[0] = f.x, force[1] = f.y, force[2] = f.z;
+  torque[0] = -r * nxf.x + roll.x, torque[1] = -r * nxf.y + roll.y, torque[2] = -r * nxf.z + roll.z;
+}
+
+void FixWallLubrication::grow_arrays(int nmax)
+{
+  memory->grow(history, nmax, HISTORY_SIZE, "wall/lubrication:history");
+}
+
+void FixWallLubrication::copy_arrays(int i, int j, int /*delflag*/)
+{
+  for (int k = 0; k < HISTORY_SIZE; k++) history[j][k] = history[i][k];
+}
+
+void FixWallLubrication::set_arrays(int i)
+{
+  for (int k = 0; k < HISTORY_SIZE; k++) history[i][k] = 0.0;
+}
+
+int FixWallLubrication::pack_exchange(int i, double *buf)
+{
+  for (int k = 0; k < HISTORY_SIZE; k++) buf[k] = history[i][k];
+  return HISTORY_SIZE;
+}
+
+int FixWallLubrication::unpack_exchange(int nlocal, double *buf)
+{
+  for (int k = 0; k < HISTORY_SIZE; k++) history[nlocal][k] = buf[k];
+  return HISTORY_SIZE;
+}
+
+int FixWallLubrication::pack_restart(int i, double *buf)
+{
+  buf[0] = HISTORY_SIZE + 1;
+  for (int k = 0; k < HISTORY_SIZE; k++) buf[k + 1] = history[i][k];
+  return HISTORY_SIZE + 1;
+}
+
+void FixWallLubrication::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  for (int k = 0; k < HISTORY_SIZE; k++) history[nlocal][k] = extra[nlocal][m + 1 + k];
+}
+
+int FixWallLubrication::size_restart(int /*i*/)
+{
+  return HISTORY_SIZE + 1;
+}
+
+int FixWallLubrication::maxsize_restart()
+{
+  return HISTORY_SIZE + 1;
+}
+
+double FixWallLubrication::memory_usage()
+{
+  return history ? static_cast<double>(atom->nmax) * HISTORY_SIZE * sizeof(double) : 0.0;
 }
 
 double FixWallLubrication::compute_scalar()

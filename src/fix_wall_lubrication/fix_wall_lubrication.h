@@ -10,12 +10,14 @@
 #include "fix.h"
 
 #include "lubricated/normal_model.h"
+#include "lubricated/tangential.h"
 
 namespace LAMMPS_NS {
 
 class FixWallLubrication : public Fix {
  public:
   FixWallLubrication(class LAMMPS *, int, char **);
+  ~FixWallLubrication() override;
 
   int setmask() override;
   void init() override;
@@ -27,9 +29,28 @@ class FixWallLubrication : public Fix {
   double compute_scalar() override;
   double compute_vector(int) override;
 
+  // Per-atom tangential elongation at each wall (friction only): migrates, restarts.
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  double memory_usage() override;
+
  protected:
   lubricated::Coefficients coeffs;
   lubricated::NormalModel model;
+  lubricated::TangentialModel tmodel;
+  // Per atom and wall side (lo, hi): elongation x y z and a touched flag.
+  static constexpr int HISTORY_PER_WALL = 4, HISTORY_SIZE = 2 * HISTORY_PER_WALL;
+  double **history = nullptr;
+  bool keeps_history() const { return coeffs.friction > 0.0; }
+  void tangential(int i, int side, double gap, double u_n, double normal_force, double *force,
+                  double *torque);
   int axis = -1;                  // 0, 1, 2 for xplane, yplane, zplane
   bool has_lo = false, has_hi = false;
   double lo = 0.0, hi = 0.0;      // wall positions (box units)

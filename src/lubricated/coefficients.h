@@ -4,6 +4,7 @@
 //
 //   e_d [ncontact N | tcontact t_c] [viscosity mu_f] [activation eps_al | grid dx]
 //       [saturation eps_1] [release eps_2] [integration exact | sampled]
+//       [friction mu_c] [tangential e_t] [rolling mu_r] [shearfilm yes | no]
 #pragma once
 
 #include <cmath>
@@ -23,10 +24,19 @@ struct Coefficients {
   double eps_saturation = 1e-3;     // eps_1
   double eps_release = -1e-2;       // eps_2
   bool exact_contact = true;        // integration exact (contact_step.h) or sampled
+  // Tangential model (tangential.h); all off by default: a normal-only contact.
+  double friction = 0.0;            // Coulomb coefficient mu_c >= 0; > 0 turns it on
+  double e_tangential = -1.0;       // tangential restitution e_t in [0, 1]; < 0: e_d
+  double rolling_friction = 0.0;    // rolling resistance mu_r >= 0 (a length ratio)
+  int shearfilm = -1;               // shear film: 1 yes, 0 no, -1 yes when friction > 0
 
-  static constexpr int packed_size = 9;
+  static constexpr int packed_size = 13;
 
   bool wet() const { return viscosity > 0.0; }
+  double tangential_restitution() const { return e_tangential >= 0.0 ? e_tangential : e_dry; }
+  bool shear_film() const { return shearfilm < 0 ? friction > 0.0 : shearfilm == 1; }
+  // Whether the contact needs the tangential kernel (and, for friction, contact history).
+  bool tangential() const { return friction > 0.0 || rolling_friction > 0.0 || (wet() && shear_film()); }
   double contact_time(double dt) const { return t_contact > 0.0 ? t_contact : n_contact * dt; }
   double steps_per_contact(double dt) const { return contact_time(dt) / dt; }
 
@@ -34,7 +44,9 @@ struct Coefficients {
   {
     const double v[packed_size] = {e_dry,          n_contact,    t_contact,      viscosity,
                                    eps_activation, grid_spacing, eps_saturation, eps_release,
-                                   exact_contact ? 1.0 : 0.0};
+                                   exact_contact ? 1.0 : 0.0,
+                                   friction,       e_tangential, rolling_friction,
+                                   static_cast<double>(shearfilm)};
     for (int i = 0; i < packed_size; ++i) buf[i] = v[i];
   }
   void unpack(const double *buf)
@@ -48,6 +60,10 @@ struct Coefficients {
     eps_saturation = buf[6];
     eps_release = buf[7];
     exact_contact = buf[8] != 0.0;
+    friction = buf[9];
+    e_tangential = buf[10];
+    rolling_friction = buf[11];
+    shearfilm = static_cast<int>(buf[12]);
   }
 };
 
@@ -85,6 +101,10 @@ inline std::string validate(const Coefficients &c)
   if (!(c.eps_release < c.eps_saturation))
     return "release = " + std::to_string(c.eps_release) + " must be below saturation = " +
         std::to_string(c.eps_saturation) + " (eps_2 < eps_1 required)";
+  if (!(c.friction >= 0.0)) return range_error("friction", c.friction, "mu_c >= 0");
+  if (c.e_tangential != -1.0 && !(c.e_tangential >= 0.0 && c.e_tangential <= 1.0))
+    return range_error("tangential", c.e_tangential, "0 <= e_t <= 1");
+  if (!(c.rolling_friction >= 0.0)) return range_error("rolling", c.rolling_friction, "mu_r >= 0");
   if (c.wet()) {
     if (c.grid_spacing < 0.0) return range_error("grid", c.grid_spacing, "dx > 0");
     if (c.grid_spacing == 0.0) {
@@ -107,7 +127,7 @@ inline std::string parse_coefficients(const std::vector<std::string> &words, siz
   if (words.size() <= first) return "missing e_d (dry restitution coefficient)";
   if (!detail::to_number(words[first], c.e_dry))
     return "expected a number for e_d, got '" + words[first] + "'";
-  bool have_n = false, have_t = false, have_al = false, have_dx = false;
+  bool have_n = false, have_t = false, have_al = false, have_dx = false, have_et = false;
   for (size_t i = first + 1; i < words.size(); i += 2) {
     const std::string &key = words[i];
     if (key == "integration") {
@@ -115,6 +135,13 @@ inline std::string parse_coefficients(const std::vector<std::string> &words, siz
       if (words[i + 1] != "exact" && words[i + 1] != "sampled")
         return "integration must be exact or sampled, got '" + words[i + 1] + "'";
       c.exact_contact = words[i + 1] == "exact";
+      continue;
+    }
+    if (key == "shearfilm") {
+      if (i + 1 >= words.size()) return "missing value for keyword shearfilm";
+      if (words[i + 1] != "yes" && words[i + 1] != "no")
+        return "shearfilm must be yes or no, got '" + words[i + 1] + "'";
+      c.shearfilm = words[i + 1] == "yes" ? 1 : 0;
       continue;
     }
     double *target = nullptr;
@@ -125,16 +152,21 @@ inline std::string parse_coefficients(const std::vector<std::string> &words, siz
     else if (key == "grid") target = &c.grid_spacing, have_dx = true;
     else if (key == "saturation") target = &c.eps_saturation;
     else if (key == "release") target = &c.eps_release;
+    else if (key == "friction") target = &c.friction;
+    else if (key == "tangential") target = &c.e_tangential, have_et = true;
+    else if (key == "rolling") target = &c.rolling_friction;
     else
       return "unknown keyword '" + key +
-          "' (expected ncontact, tcontact, viscosity, activation, grid, saturation, release or "
-          "integration)";
+          "' (expected ncontact, tcontact, viscosity, activation, grid, saturation, release, "
+          "integration, friction, tangential, rolling or shearfilm)";
     if (i + 1 >= words.size()) return "missing value for keyword " + key;
     if (!detail::to_number(words[i + 1], *target))
       return "expected a number for keyword " + key + ", got '" + words[i + 1] + "'";
   }
   if (have_n && have_t) return "ncontact and tcontact are mutually exclusive";
   if (have_al && have_dx) return "activation and grid are mutually exclusive";
+  if (have_et && !(c.e_tangential >= 0.0 && c.e_tangential <= 1.0))
+    return detail::range_error("tangential", c.e_tangential, "0 <= e_t <= 1");
   if (have_t && !(c.t_contact > 0.0)) return detail::range_error("tcontact", c.t_contact, "t_c > 0");
   if (have_dx && !(c.grid_spacing > 0.0))
     return detail::range_error("grid", c.grid_spacing, "dx > 0");

@@ -4,6 +4,7 @@
 
 #include "pair_lubricated_springdashpot.h"
 
+#include "fix_contact_history/fix_contact_history.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 
 #include "atom.h"
@@ -40,6 +41,8 @@ PairLubricatedSpringDashpot::PairLubricatedSpringDashpot(LAMMPS *lmp) : Pair(lmp
 PairLubricatedSpringDashpot::~PairLubricatedSpringDashpot()
 {
   delete[] svector;
+  // The history fix goes with the pair style (modify outlives force at shutdown).
+  if (history && modify->get_fix_by_id(history_id)) modify->delete_fix(history_id);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -56,6 +59,7 @@ void PairLubricatedSpringDashpot::allocate()
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
   coeffs.assign((n + 1) * (n + 1), lub::Coefficients());
   models.assign((n + 1) * (n + 1), lub::NormalModel());
+  tmodels.assign((n + 1) * (n + 1), lub::TangentialModel());
   max_reach.assign((n + 1) * (n + 1), 0.0);
   maxrad.assign(n + 1, 0.0);
 }
@@ -103,7 +107,8 @@ void PairLubricatedSpringDashpot::init_style()
     error->all(FLERR, "{} requires ghost atoms to store velocity: use comm_modify vel yes", STYLE);
 
   const int n = atom->ntypes;
-  any_wet = false;
+  any_wet = any_tangential = false;
+  bool any_friction = false;
   std::set<std::string> advice;
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++) {
@@ -113,7 +118,24 @@ void PairLubricatedSpringDashpot::init_style()
       if (!problem.empty()) error->all(FLERR, "{} types {} {}: {}", STYLE, i, j, problem);
       advice.insert(lub::time_step_warning(c, update->dt));
       any_wet = any_wet || c.wet();
+      any_tangential = any_tangential || c.tangential();
+      any_friction = any_friction || c.friction > 0.0;
     }
+  if (any_tangential && !(atom->omega_flag && atom->torque_flag))
+    error->all(FLERR, "{} with friction, rolling or shearfilm requires per-atom omega and torque "
+               "(atom_style sphere)", STYLE);
+  // Friction needs the tangential elongation of every contact, kept by a fix of our own
+  // that follows atoms across neighbor-list rebuilds, ranks and restart files.
+  if (any_friction && !history) {
+    history_id = "LUBRICATED_HISTORY_" + std::to_string(instance_me);
+    history = dynamic_cast<FixContactHistory *>(
+        modify->add_fix(history_id + " all LUBRICATED_HISTORY 3"));
+    if (!history) error->all(FLERR, "{}: could not create its contact-history fix", STYLE);
+  }
+  if (!any_friction && history) {
+    modify->delete_fix(history_id);
+    history = nullptr;
+  }
   if (comm->me == 0)
     for (const auto &msg : advice)
       if (!msg.empty()) error->warning(FLERR, "{}: {}", STYLE, msg);
@@ -142,6 +164,12 @@ void PairLubricatedSpringDashpot::init_style()
     }
 }
 
+void PairLubricatedSpringDashpot::init_list(int id, NeighList *ptr)
+{
+  Pair::init_list(id, ptr);
+  if (history) history->set_list(ptr);
+}
+
 double PairLubricatedSpringDashpot::init_one(int i, int j)
 {
   if (!setflag[i][j])
@@ -149,6 +177,7 @@ double PairLubricatedSpringDashpot::init_one(int i, int j)
   const lub::Coefficients &c = coeffs[index(i, j)];
   models[index(i, j)] = models[index(j, i)] =
       lub::make_normal_model(c, lub::Partner::particle, update->dt);
+  tmodels[index(i, j)] = tmodels[index(j, i)] = lub::make_tangential_model(c, update->dt);
   if (comm->me == 0) {
     // Report what was derived (k and c per unit reduced mass, the contact resolution).
     const lub::NormalModel &m = models[index(i, j)];
@@ -158,6 +187,10 @@ double PairLubricatedSpringDashpot::init_one(int i, int j)
                    m.contact.damping_per_mass,
                    c.wet() ? fmt::format("film mu_f = {}, ", c.viscosity) : std::string("dry, "),
                    c.exact_contact ? "integration exact" : "integration sampled");
+    if (c.tangential())
+      utils::logmesg(lmp, "{} types {} {}: friction mu_c = {}, e_t = {}, rolling mu_r = {}, "
+                     "shear film {}\n", STYLE, i, j, c.friction, c.tangential_restitution(),
+                     c.rolling_friction, c.wet() && c.shear_film() ? "on" : "off");
   }
 
   // The film of the largest pair of these types reaches farthest.
@@ -173,9 +206,12 @@ void PairLubricatedSpringDashpot::update_models()
   const int n = atom->ntypes;
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++)
-      if (setflag[i][j])
+      if (setflag[i][j]) {
         models[index(i, j)] = models[index(j, i)] =
             lub::make_normal_model(coeffs[index(i, j)], lub::Partner::particle, update->dt);
+        tmodels[index(i, j)] = tmodels[index(j, i)] =
+            lub::make_tangential_model(coeffs[index(i, j)], update->dt);
+      }
 }
 
 // k = m_e (pi^2 + ln^2 e_d) / (N_c dt)^2 follows the time step when N_c is given.
@@ -187,12 +223,18 @@ void PairLubricatedSpringDashpot::reset_dt()
 void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  if (any_wet) eval<true>();
-  else eval<false>();
+  // A scene pays only for what it uses: one loop per combination.
+  if (any_tangential) {
+    if (any_wet) eval<true, true>();
+    else eval<false, true>();
+  } else {
+    if (any_wet) eval<true, false>();
+    else eval<false, false>();
+  }
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
-template <bool WET> void PairLubricatedSpringDashpot::eval()
+template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
 {
   double **x = atom->x;
   double **v = atom->v;
@@ -230,6 +272,15 @@ template <bool WET> void PairLubricatedSpringDashpot::eval()
     const int itype = type[i];
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
+    // A pair that is not in contact now has no elongation to keep.
+    char *touched = TANGENTIAL && history ? history->touched(i) : nullptr;
+    auto forget = [&](int jj) {
+      if (TANGENTIAL && touched && touched[jj]) {
+        touched[jj] = 0;
+        double *h = history->values(i) + 3 * jj;
+        h[0] = h[1] = h[2] = 0.0;
+      }
+    };
 
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
@@ -242,7 +293,10 @@ template <bool WET> void PairLubricatedSpringDashpot::eval()
       {
         // Farther than the film reaches (at most eps_al R_max or 0.75 dx) plus a step: skip.
         const double near = radsum + margin + (WET ? max_reach[index(itype, type[j])] : 0.0);
-        if (rsq >= near * near) continue;
+        if (rsq >= near * near) {
+          forget(jj);
+          continue;
+        }
       }
       const double *vi = v[i], *vj = v[j];
       if (midpoint && model.exact) vi = midpoint->step_velocity(i), vj = midpoint->step_velocity(j);
@@ -260,11 +314,15 @@ template <bool WET> void PairLubricatedSpringDashpot::eval()
         // Apart and out of the film: only a contact starting, or a film entered or left,
         // within a step can act: gap < reach + |u_n| dt, i.e. rsq - |dv.del| dt < outer r
         // (tested without a sqrt).
+        forget(jj);
         if (!model.exact) continue;
         const double s = rsq - std::fabs(dvx * delx + dvy * dely + dvz * delz) * dt;
         if (s > 0.0 && s * s >= outer * outer * rsq) continue;
       }
-      if (rsq == 0.0) continue;    // coincident centres: no normal direction is defined
+      if (rsq == 0.0) {    // coincident centres: no normal direction is defined
+        forget(jj);
+        continue;
+      }
 
       const double r = std::sqrt(rsq);
       const double rinv = 1.0 / r;
@@ -274,17 +332,86 @@ template <bool WET> void PairLubricatedSpringDashpot::eval()
           lub::normal_force(model, r - radsum, lub_radius, m_e, u_n, at_start);
 
       const double fpair = fn.total() * rinv;
-      f[i][0] += delx * fpair;
-      f[i][1] += dely * fpair;
-      f[i][2] += delz * fpair;
-      if (newton_pair || j < nlocal) {
-        f[j][0] -= delx * fpair;
-        f[j][1] -= dely * fpair;
-        f[j][2] -= delz * fpair;
+      double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
+      if (TANGENTIAL) {
+        double ft[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0}, tj[3] = {0.0, 0.0, 0.0};
+        const double del[3] = {delx, dely, delz};
+        tangential(i, j, jj, del, rinv, r - radsum, u_n, lub_radius, m_e, fn.contact, ft, ti, tj);
+        fx += ft[0], fy += ft[1], fz += ft[2];
+        double **torque = atom->torque;
+        for (int d = 0; d < 3; d++) torque[i][d] += ti[d];
+        if (newton_pair || j < nlocal)
+          for (int d = 0; d < 3; d++) torque[j][d] += tj[d];
       }
-      if (evflag) ev_tally(i, j, nlocal, newton_pair, fn.energy, 0.0, fpair, delx, dely, delz);
+      f[i][0] += fx;
+      f[i][1] += fy;
+      f[i][2] += fz;
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= fx;
+        f[j][1] -= fy;
+        f[j][2] -= fz;
+      }
+      if (evflag) {
+        if (TANGENTIAL)
+          ev_tally_xyz(i, j, nlocal, newton_pair, fn.energy, 0.0, fx, fy, fz, delx, dely, delz);
+        else
+          ev_tally(i, j, nlocal, newton_pair, fn.energy, 0.0, fpair, delx, dely, delz);
+      }
     }
   }
+}
+
+// Tangential force ft on i (on j: -ft) and the torques ti, tj of one pair (tangential.h).
+void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const double *del, double rinv,
+                                             double gap, double u_n, double lub_radius, double m_e,
+                                             double normal_force, double *ft, double *ti, double *tj)
+{
+  const lub::TangentialModel &tm = tmodels[index(atom->type[i], atom->type[j])];
+  const double radi = atom->radius[i], radj = atom->radius[j];
+  double **v = atom->v, **omega = atom->omega;
+  const lub::Vec3 n{del[0] * rinv, del[1] * rinv, del[2] * rinv};
+  const lub::Vec3 dv{v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+  const lub::Vec3 wi{omega[i][0], omega[i][1], omega[i][2]};
+  const lub::Vec3 wj{omega[j][0], omega[j][1], omega[j][2]};
+  const lub::Vec3 s =
+      lub::tangential_part(lub::minus(dv, lub::cross(lub::plus(lub::scaled(wi, radi),
+                                                               lub::scaled(wj, radj)), n)), n);
+  const double m_t = lub::tangential_mass_ratio * m_e;
+  const double reduced_radius = radi * radj / (radi + radj);
+
+  lub::Vec3 f;
+  if (history) {
+    char &touched = history->touched(i)[jj];
+    double *h = history->values(i) + 3 * jj;
+    if (tm.contact_active() && lub::tangential_in_contact(gap)) {
+      const double fraction = touched ? 1.0 : lub::first_contact_fraction(gap, u_n, tm.dt);
+      lub::Vec3 delta{h[0], h[1], h[2]};
+      f = lub::tangential_contact_force(tm, delta, n, s, m_t, normal_force, fraction);
+      h[0] = delta.x, h[1] = delta.y, h[2] = delta.z;
+      touched = 1;
+    } else if (touched) {
+      touched = 0;
+      h[0] = h[1] = h[2] = 0.0;
+    }
+  }
+  if (tm.film_active()) {
+    const lub::Lubrication &film = models[index(atom->type[i], atom->type[j])].lubrication;
+    const double eps = gap / lub_radius;
+    f = lub::plus(f, lub::shear_film_force(tm, s, eps, film.activation_for(lub_radius),
+                                           film.eps_saturation, film.eps_release,
+                                           reduced_radius, m_t));
+  }
+  lub::Vec3 roll;
+  if (tm.rolling_active() && gap < 0.0) {
+    const double inertia_i = 0.4 * atom->rmass[i] * radi * radi;
+    const double inertia_j = 0.4 * atom->rmass[j] * radj * radj;
+    roll = lub::rolling_torque(tm, n, lub::minus(wi, wj), reduced_radius,
+                               inertia_i * inertia_j / (inertia_i + inertia_j), normal_force);
+  }
+  const lub::Vec3 nxf = lub::cross(n, f);
+  ft[0] = f.x, ft[1] = f.y, ft[2] = f.z;
+  ti[0] = -radi * nxf.x + roll.x, ti[1] = -radi * nxf.y + roll.y, ti[2] = -radi * nxf.z + roll.z;
+  tj[0] = -radj * nxf.x - roll.x, tj[1] = -radj * nxf.y - roll.y, tj[2] = -radj * nxf.z - roll.z;
 }
 
 double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, double rsq,

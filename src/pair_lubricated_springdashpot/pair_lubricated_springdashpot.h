@@ -10,6 +10,9 @@
 #include "pair.h"
 
 #include "lubricated/normal_model.h"
+#include "lubricated/tangential.h"
+
+#include <string>
 
 #include <vector>
 
@@ -24,6 +27,7 @@ class PairLubricatedSpringDashpot : public Pair {
   void settings(int, char **) override;
   void coeff(int, char **) override;
   void init_style() override;
+  void init_list(int, class NeighList *) override;
   double init_one(int, int) override;
   void reset_dt() override;
   void write_restart(FILE *) override;
@@ -34,16 +38,23 @@ class PairLubricatedSpringDashpot : public Pair {
  protected:
   std::vector<lubricated::Coefficients> coeffs;    // per type pair, (ntypes+1)^2
   std::vector<lubricated::NormalModel> models;     // derived from coeffs and dt
+  std::vector<lubricated::TangentialModel> tmodels;    // tangential part, derived likewise
   std::vector<double> maxrad;                      // largest radius per type
   std::vector<double> max_reach;                   // farthest film gap per type pair
   bool any_wet = false;
+  bool any_tangential = false;    // friction, rolling or shear film on some type pair
+  class FixContactHistory *history = nullptr;    // tangential elongation per contact
+  std::string history_id;
   class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
 
   void allocate();
   int ntypes_alloc = 0;
   int index(int itype, int jtype) const { return itype * (ntypes_alloc + 1) + jtype; }
   void update_models();
-  template <bool WET> void eval();
+  template <bool WET, bool TANGENTIAL> void eval();
+  void tangential(int i, int j, int jj, const double *del, double rinv, double gap, double u_n,
+                  double lub_radius, double m_e, double normal_force, double *ft, double *ti,
+                  double *tj);
 };
 
 }    // namespace LAMMPS_NS

@@ -6,6 +6,7 @@
 
 #include "lammps.h"
 
+#include "fix_contact_history/fix_contact_history.h"
 #include "fix_fluid_drag/fix_fluid_drag.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_wall_lubrication/fix_wall_lubrication.h"
@@ -51,6 +52,11 @@ static Fix *create_fix_drag(LAMMPS *lmp, int narg, char **arg)
   return new FixFluidDrag(lmp, narg, arg);
 }
 
+static Fix *create_fix_history(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixContactHistory(lmp, narg, arg);
+}
+
 static Fix *create_fix_midpoint(LAMMPS *lmp, int narg, char **arg)
 {
   return new FixNVESphereMidpoint(lmp, narg, arg);
@@ -85,5 +91,11 @@ void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "fluid/drag";
   plugin.info = "drag, hindered settling and buoyancy of an unresolved fluid on spheres";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_drag;
+  (*reg)(&plugin, lmp);
+
+  // Internal: created by the pair style for friction, never typed by users.
+  plugin.name = "LUBRICATED_HISTORY";
+  plugin.info = "contact history of pair_style lubricated/springdashpot";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_history;
   (*reg)(&plugin, lmp);
 }

@@ -53,6 +53,17 @@ CASES = {
                        ["viscosity = -2", "mu_f >= 0"]),
     "wall_missing_plane": (script(fix="fix w all wall/lubrication 0.9 ncontact 8"), ["missing wall style"]),
     "wall_both_null": (script(fix="fix w all wall/lubrication 0.9 zplane NULL NULL"), ["both walls are NULL"]),
+    "negative_friction": (script("pair_coeff * * 0.9 friction -0.3"), ["friction = -0.3", "mu_c >= 0"]),
+    "tangential_above_one": (script("pair_coeff * * 0.9 friction 0.3 tangential 1.2"),
+                             ["tangential = 1.2", "0 <= e_t <= 1"]),
+    "tangential_negative": (script("pair_coeff * * 0.9 friction 0.3 tangential -0.5"),
+                            ["tangential = -0.5", "0 <= e_t <= 1"]),
+    "negative_rolling": (script("pair_coeff * * 0.9 friction 0.3 rolling -0.1"), ["rolling = -0.1", "mu_r >= 0"]),
+    "shearfilm_value": (script("pair_coeff * * 0.9 shearfilm maybe"), ["shearfilm must be yes or no"]),
+    "wall_negative_friction": (script(fix="fix w all wall/lubrication 0.9 friction -1 zplane 0.0 NULL"),
+                               ["Fix wall/lubrication", "friction = -1", "mu_c >= 0"]),
+    "wall_tangential": (script(fix="fix w all wall/lubrication 0.9 friction 0.5 tangential 2 zplane 0.0 NULL"),
+                        ["Fix wall/lubrication", "tangential = 2", "0 <= e_t <= 1"]),
     "wall_lo_above_hi": (script(fix="fix w all wall/lubrication 0.9 zplane 0.02 0.01"), ["must be below hi"]),
 }
 

@@ -1,0 +1,81 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   fix LUBRICATED_HISTORY: per-contact history (the tangential spring elongation) of
+   pair_style lubricated/springdashpot. Internal: the pair style creates it in init_style.
+
+   Between neighbor-list builds the history lives in flat arrays aligned with the pair's
+   half list (touched flag + nvalue doubles per list entry), written by the pair in
+   compute(). On every reneighboring step, before atoms migrate (pre_exchange), each
+   touching pair is stored with both atoms as (partner tag, values in that atom's frame):
+   owned atoms directly, ghost atoms (newton on) through a reverse communication to their
+   owners. The per-atom records travel with migrating atoms and go into restart files;
+   after the new list is built (post_neighbor) they are looked up again by partner tag.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_FIX_CONTACT_HISTORY_H
+#define LMP_FIX_CONTACT_HISTORY_H
+
+#include "fix.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixContactHistory : public Fix {
+ public:
+  FixContactHistory(class LAMMPS *, int, char **);
+  ~FixContactHistory() override;
+
+  int setmask() override;
+  void init() override;
+  void setup_pre_exchange() override;
+  void pre_exchange() override;
+  void min_pre_exchange() override;
+  void setup_post_neighbor() override;
+  void post_neighbor() override;
+  void min_post_neighbor() override;
+  void post_run() override;
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  int pack_reverse_comm_size(int, int) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+  double memory_usage() override;
+
+  void set_list(class NeighList *l) { list = l; }
+  // History of list entry jj of atom i: touched flag and nvalue doubles, in i's frame.
+  char *touched(int i) { return touch.data() + offset[i]; }
+  double *values(int i) { return value.data() + offset[i] * nvalue; }
+
+ protected:
+  int nvalue;
+  class NeighList *list = nullptr;
+  bool mapped = false;    // the flat arrays hold the current history
+
+  // Flat arrays aligned with the half list: entry jj of atom i at offset[i] + jj.
+  std::vector<int> offset;
+  std::vector<char> touch;
+  std::vector<double> value;
+
+  // Per atom (owned and ghost): partners' tags and their values, in this atom's frame.
+  std::vector<std::vector<tagint>> partner;
+  std::vector<std::vector<double>> partner_value;
+  int record_size(int i) const { return 1 + static_cast<int>(partner[i].size()) * (1 + nvalue); }
+
+  void store_from_list();
+  void map_to_list();
+  void add(int i, tagint other, const double *v, double sign);
+  int pack_record(int i, double *buf) const;
+  int unpack_record(int i, const double *buf, bool append);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,158 @@
+// Tangential interaction of one contact: spring-dashpot with a Coulomb limit and history
+// (Costa et al., Phys. Rev. E 92, 053012, 2015), optional rolling resistance, and the shear
+// film of the lubrication layer. Conventions as in normal_model.h (n from the partner to
+// particle i); in addition:
+//
+//   s     slip velocity of the surfaces along the line of centres, tangential part:
+//         s = (v_i - v_j) - (R_i omega_i + R_j omega_j) x n,  s . n removed
+//         (wall: v_i - R_i omega_i x n); velocities of the last step, like u_n;
+//   delta tangential spring elongation (history), kept in the tangent plane;
+//   m_t   tangential mass 2/7 m_e: with solid spheres (I = 2/5 m R^2) a force F applied at
+//         the contact points changes s by F dt / m_t, both translation and rotation counted
+//         (1/m_t = 1/m_i + 1/m_j + R_i^2/I_i + R_j^2/I_j = 7 / (2 m_e));
+//   force on i = F_t at the contact point, on j = -F_t; torque on i = -R_i n x F_t,
+//   on j = -R_j n x F_t.
+//
+// Stiffness and damping follow from the tangential restitution e_t and the normal contact
+// duration t_c, as the normal ones from e_d (Costa et al. eq. 9):
+//   k_t = m_t (pi^2 + ln^2 e_t) / t_c^2,  eta_t = -2 m_t ln(e_t) / t_c,
+// so a sticking contact completes half a damped oscillation in t_c and reverses s with
+// factor e_t. As in the normal direction (contact_step.h), the force over a step is the one
+// that makes the leapfrog step land on the analytic oscillator,
+//   F = m_t (delta_next - 2 delta + delta_prev) / dt^2,  delta_next = 2 E C delta - E^2 delta_prev,
+// i.e. a spring-dashpot with per-step constants k' = m_t (1 + E^2 - 2 E C) / dt^2 and
+// c' = m_t (1 - E^2) / dt, exact for any N_c in sticking and finite for e_t = 0 (E = 0).
+// Coulomb: |F_t| <= mu_c |F_n| with F_n the normal contact force of the step; beyond it the
+// contact slides with |F_t| = mu_c |F_n| and delta is reset to the elongation that force
+// implies, delta = -(F_t + c' s) / k' (the usual history truncation).
+#pragma once
+
+#include "coefficients.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lubricated {
+
+constexpr double tangential_mass_ratio = 2.0 / 7.0;    // m_t / m_e for solid spheres
+
+struct Vec3 {
+  double x = 0.0, y = 0.0, z = 0.0;
+};
+inline double dot(const Vec3 &a, const Vec3 &b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Vec3 cross(const Vec3 &a, const Vec3 &b)
+{
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline Vec3 scaled(const Vec3 &a, double s) { return {a.x * s, a.y * s, a.z * s}; }
+inline Vec3 minus(const Vec3 &a, const Vec3 &b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Vec3 plus(const Vec3 &a, const Vec3 &b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline Vec3 tangential_part(const Vec3 &a, const Vec3 &n) { return minus(a, scaled(n, dot(a, n))); }
+
+struct TangentialModel {
+  double friction = 0.0;          // mu_c; 0: no tangential contact force, no history
+  double rolling = 0.0;           // mu_r; 0: no rolling resistance
+  double stiffness_step = 0.0;    // k' / m_t  [1/time^2]
+  double damping_step = 0.0;      // c' / m_t  [1/time]
+  double dt = 0.0;
+  // Shear film: F = -2 pi mu_f R_e ln(eps_al / max(eps, eps_1)) s for eps_2 < eps < eps_al.
+  double two_pi_mu = 0.0;         // 2 pi mu_f = 6 pi mu_f / 3; 0: no shear film
+  bool contact_active() const { return friction > 0.0; }
+  bool rolling_active() const { return rolling > 0.0; }
+  bool film_active() const { return two_pi_mu > 0.0; }
+  bool active() const { return contact_active() || rolling_active() || film_active(); }
+};
+
+inline TangentialModel make_tangential_model(const Coefficients &c, double dt)
+{
+  TangentialModel m;
+  m.friction = c.friction;
+  m.rolling = c.rolling_friction;
+  m.dt = dt;
+  // The same floor on the contact duration as the normal direction (contact_step.h).
+  const double t_c = std::max(c.contact_time(dt), 1.5 * dt);
+  const double e_t = c.tangential_restitution();
+  const double E = e_t > 0.0 ? std::pow(e_t, dt / t_c) : 0.0;    // exp(ln(e_t) dt / t_c)
+  const double C = std::cos(M_PI * dt / t_c);
+  m.stiffness_step = (1.0 + E * E - 2.0 * E * C) / (dt * dt);
+  m.damping_step = (1.0 - E * E) / dt;
+  if (c.wet() && c.shear_film()) m.two_pi_mu = 2.0 * M_PI * c.viscosity;
+  return m;
+}
+
+// Whether the tangential contact acts: in overlap. Known limitation: an impact whose entry
+// falls on a step boundary to round-off can gain or lose one step of tangential damping
+// (up to 2 ln(1/e_t) / N_c of the slip) depending on the sign of the round-off.
+inline bool tangential_in_contact(double gap) { return gap < 0.0; }
+
+// Part of the last step spent in overlap by a contact that is new now (free flight before).
+inline double first_contact_fraction(double gap, double u_n, double dt)
+{
+  if (u_n >= 0.0) return 1.0;
+  return std::min(1.0, std::max(0.0, gap / (u_n * dt)));
+}
+
+// Tangential contact force on i for a contact in overlap. delta (history, in: elongation at
+// the end of the last step; out: now) is rotated into the current tangent plane before use.
+// first_fraction: for a contact that opened during the last step, the part of that step spent
+// in overlap (the elongation starts from zero there); 1 for a sustained contact.
+inline Vec3 tangential_contact_force(const TangentialModel &m, Vec3 &delta, const Vec3 &n,
+                                     const Vec3 &s, double tangential_mass, double normal_force,
+                                     double first_fraction = 1.0)
+{
+  // Keep the elongation in the tangent plane, with its length (the pair may have rotated).
+  const double before = std::sqrt(dot(delta, delta));
+  delta = tangential_part(delta, n);
+  const double after = std::sqrt(dot(delta, delta));
+  if (after > 0.0) delta = scaled(delta, before / after);
+  delta = plus(delta, scaled(s, first_fraction * m.dt));
+
+  Vec3 f = scaled(plus(scaled(delta, m.stiffness_step), scaled(s, m.damping_step)), -tangential_mass);
+  const double limit = m.friction * std::fabs(normal_force);
+  const double f2 = dot(f, f);
+  if (f2 > limit * limit) {
+    f = scaled(f, limit / std::sqrt(f2));
+    // Sliding: the spring holds what the capped force implies.
+    delta = scaled(plus(scaled(f, 1.0 / tangential_mass), scaled(s, m.damping_step)),
+                   -1.0 / m.stiffness_step);
+  }
+  return f;
+}
+
+// Rolling resistance (constant-torque model, Ai et al., Powder Technol. 206, 269, 2011,
+// model A): torque on i of size mu_r R_e |F_n| against the relative rolling rate
+// w = tangential part of omega_i - omega_j, capped so that one step cannot reverse w
+// (moment of inertia of the relative rolling: 1/I_e = 1/I_i + 1/I_j). On j: the opposite.
+inline Vec3 rolling_torque(const TangentialModel &m, const Vec3 &n, const Vec3 &omega_rel,
+                           double reduced_radius, double reduced_inertia, double normal_force)
+{
+  const Vec3 w = tangential_part(omega_rel, n);
+  const double speed = std::sqrt(dot(w, w));
+  if (speed == 0.0) return {};
+  const double torque = std::min(m.rolling * reduced_radius * std::fabs(normal_force),
+                                 reduced_inertia * speed / m.dt);
+  return scaled(w, -torque / speed);
+}
+
+// Shear film (the gap's Couette flow to leading order): force on i for the slip velocity s at
+// normalised gap eps. The coefficient 2 pi mu R_e ln(1/eps) is the leading term of the
+// tangential resistance of a sphere translating along a wall, the slip mode of Goldman, Cox &
+// Brenner (Chem. Eng. Sci. 22, 637, 1967) and O'Neill & Stewartson (J. Fluid Mech. 27, 705,
+// 1967): 6 pi mu a (8/15 U - 2/15 a Omega) ln(1/eps) has slip-mode coefficient 6 pi mu a / 3;
+// for two spheres R_e = R_1 R_2 / (R_1 + R_2) gives Jeffrey & Onishi's (1/6) 6 pi mu a for
+// equal spheres. Activated at eps_al (continuous there), saturated below eps_1, cut below eps_2,
+// like the normal film. The damper is integrated exactly over the step (factor 1 - exp(-x)),
+// so it never reverses s, however viscous the fluid or long the step.
+inline Vec3 shear_film_force(const TangentialModel &m, const Vec3 &s, double eps, double eps_al,
+                             double eps_saturation, double eps_release, double reduced_radius,
+                             double tangential_mass)
+{
+  if (!(eps < eps_al && eps > eps_release)) return {};
+  const double coefficient =
+      m.two_pi_mu * reduced_radius * std::log(eps_al / std::max(eps, eps_saturation));
+  const double rate = coefficient * m.dt / tangential_mass;
+  const double factor = rate < 1e-6 ? rate * (1.0 - 0.5 * rate) : -std::expm1(-rate);
+  return scaled(s, -factor * tangential_mass / m.dt);
+}
+
+}    // namespace lubricated
