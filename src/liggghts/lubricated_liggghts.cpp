@@ -1,0 +1,27 @@
+// liblubricated_liggghts.so: adds `model lubricated` to a stock LIGGGHTS 3.8.0 when loaded
+// (LD_PRELOAD=.../liblubricated_liggghts.so liggghts -in ..., or the liggghts-lubricated
+// launcher). Everything here runs from a static initialiser, after libliggghts.so's own.
+#include "liggghts/register_lubricated.h"
+
+namespace {
+
+struct RegisterLubricated {
+  RegisterLubricated()
+  {
+    using namespace LIGGGHTS::ContactModels;
+    Factory::instance().addNormalModel("lubricated", LUBRICATED);
+    lubricated::liggghts::register_tangential_off();
+    lubricated::liggghts::register_tangential_no_history();
+    lubricated::liggghts::register_tangential_history();
+  }
+};
+
+const RegisterLubricated register_lubricated;
+
+}    // namespace
+
+// Lets a test or a launcher check that the library is loaded.
+extern "C" __attribute__((visibility("default"))) const char *lubricated_liggghts_version()
+{
+  return "lubricated 1.0 for LIGGGHTS 3.8.0";
+}

@@ -1,0 +1,178 @@
+// Material properties of LIGGGHTS's `model lubricated`, read from `fix property/global`:
+//
+//   coefficientRestitution   peratomtypepair  e_d (required, the usual LIGGGHTS property)
+//   lubricatedContactSteps   scalar           N_c, contact duration in steps (default 8)
+//   lubricatedContactTime    scalar           t_c in time units (instead of N_c)
+//   lubricatedViscosity      scalar           mu_f of the fluid (default 0: dry)
+//   lubricatedActivation     scalar           eps_al, film activation gap / R
+//   lubricatedGridSpacing    scalar           dx: eps_al = 0.75 dx / R (instead of eps_al)
+//   lubricatedSaturation     scalar           eps_1 (default 1e-3)
+//   lubricatedRelease        scalar           eps_2 (default -1e-2)
+//
+// The values go through the kernel's Coefficients and validate(), the same ranges and
+// messages as pair_coeff in the LAMMPS plugin, with each keyword named by its property.
+#pragma once
+
+#include "fix_property_global.h"
+#include "modify.h"
+
+#include "lubricated/coefficients.h"
+#include "lubricated/normal_model.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace lubricated {
+namespace liggghts {
+
+// Relative gap beyond contact, in units of r_i + r_j, kept for the step before an impact
+// (the step-exact contact acts one step early); neigh_modify contact_distance_factor raises it.
+constexpr double approach_margin = 0.02;
+
+struct PropertyName {
+  const char *keyword;     // kernel keyword (coefficients.h)
+  const char *property;    // LIGGGHTS property name
+};
+
+constexpr PropertyName property_names[] = {
+    {"ncontact", "lubricatedContactSteps"}, {"tcontact", "lubricatedContactTime"},
+    {"viscosity", "lubricatedViscosity"},   {"activation", "lubricatedActivation"},
+    {"grid", "lubricatedGridSpacing"},      {"saturation", "lubricatedSaturation"},
+    {"release", "lubricatedRelease"},       {"e_d", "coefficientRestitution"}};
+
+// A kernel message with its keywords replaced by the property names users typed.
+inline std::string with_property_names(std::string message)
+{
+  std::string out;
+  size_t pos = 0;
+  while (pos < message.size()) {
+    bool replaced = false;
+    for (const PropertyName &p : property_names) {
+      const std::string key = p.keyword;
+      const bool start = pos == 0 || !std::isalnum(static_cast<unsigned char>(message[pos - 1]));
+      const size_t end = pos + key.size();
+      if (start && message.compare(pos, key.size(), key) == 0 &&
+          (end == message.size() || !(std::isalnum(static_cast<unsigned char>(message[end])) ||
+                                      message[end] == '_'))) {
+        out += p.property;
+        pos = end;
+        replaced = true;
+        break;
+      }
+    }
+    if (!replaced) out += message[pos++];
+  }
+  return out;
+}
+
+// An optional scalar property; false when absent.
+inline bool read_scalar(LAMMPS_NS::Modify *modify, const char *name, const char *caller, double &value)
+{
+  auto *fix = static_cast<LAMMPS_NS::FixPropertyGlobal *>(
+      modify->find_fix_property(name, "property/global", "scalar", 0, 0, caller, false));
+  if (!fix) return false;
+  value = fix->compute_scalar();
+  return true;
+}
+
+// Coefficients per type pair, index i * (ntypes + 1) + j; message is set on bad input.
+inline std::vector<Coefficients> read_coefficients(LAMMPS_NS::Modify *modify, int ntypes,
+                                                   const char *caller, std::string &message)
+{
+  std::vector<Coefficients> table((ntypes + 1) * (ntypes + 1));
+  auto *restitution = static_cast<LAMMPS_NS::FixPropertyGlobal *>(modify->find_fix_property(
+      "coefficientRestitution", "property/global", "peratomtypepair", ntypes, ntypes, caller));
+  Coefficients common;
+  double value = 0.0;
+  const bool have_n = read_scalar(modify, "lubricatedContactSteps", caller, value);
+  if (have_n) common.n_contact = value;
+  const bool have_t = read_scalar(modify, "lubricatedContactTime", caller, value);
+  if (have_t) common.t_contact = value;
+  if (read_scalar(modify, "lubricatedViscosity", caller, value)) common.viscosity = value;
+  const bool have_al = read_scalar(modify, "lubricatedActivation", caller, value);
+  if (have_al) common.eps_activation = value;
+  const bool have_dx = read_scalar(modify, "lubricatedGridSpacing", caller, value);
+  if (have_dx) common.grid_spacing = value;
+  if (read_scalar(modify, "lubricatedSaturation", caller, value)) common.eps_saturation = value;
+  if (read_scalar(modify, "lubricatedRelease", caller, value)) common.eps_release = value;
+
+  const std::string prefix = std::string(caller) + ": ";
+  if (have_n && have_t)
+    message = prefix + "lubricatedContactSteps and lubricatedContactTime are mutually exclusive";
+  else if (have_al && have_dx)
+    message = prefix + "lubricatedActivation and lubricatedGridSpacing are mutually exclusive";
+  else if (have_t && !(common.t_contact > 0.0))
+    message = prefix + with_property_names(detail::range_error("tcontact", common.t_contact, "t_c > 0"));
+  else if (have_dx && !(common.grid_spacing > 0.0))
+    message = prefix + with_property_names(detail::range_error("grid", common.grid_spacing, "dx > 0"));
+  if (!message.empty()) return table;
+
+  for (int i = 1; i <= ntypes; i++)
+    for (int j = 1; j <= ntypes; j++) {
+      Coefficients c = common;
+      c.e_dry = restitution->compute_array(i - 1, j - 1);
+      const std::string error = validate(c);
+      if (!error.empty()) {
+        message = prefix + "types " + std::to_string(i) + " " + std::to_string(j) + ": " +
+            with_property_names(error);
+        return table;
+      }
+      table[i * (ntypes + 1) + j] = c;
+    }
+  return table;
+}
+
+inline std::vector<NormalModel> build_models(const std::vector<Coefficients> &table, int ntypes,
+                                             bool wall, double dt, std::string &message)
+{
+  std::vector<NormalModel> models(table.size());
+  for (int i = 1; i <= ntypes; i++)
+    for (int j = 1; j <= ntypes; j++) {
+      const Coefficients &c = table[i * (ntypes + 1) + j];
+      const std::string error = validate_time_step(c, dt);
+      if (!error.empty()) {
+        message = "model lubricated: " + with_property_names(error);
+        return models;
+      }
+      models[i * (ntypes + 1) + j] =
+          make_normal_model(c, wall ? Partner::wall : Partner::particle, dt);
+    }
+  return models;
+}
+
+// Largest film reach beyond contact in units of the distance LIGGGHTS scales by its contact
+// distance factor: r_i + r_j for pairs (reach eps_al R with R = 2 r_i r_j / (r_i + r_j),
+// at most eps_al / 2 of r_i + r_j), r_i for walls. A grid spacing needs the smallest radius;
+// returns -1 when it is unknown (no particles yet).
+inline double reach_fraction(const std::vector<Coefficients> &table, int ntypes, bool wall,
+                             double r_min)
+{
+  double reach = 0.0;
+  for (int i = 1; i <= ntypes; i++)
+    for (int j = 1; j <= ntypes; j++) {
+      const Coefficients &c = table[i * (ntypes + 1) + j];
+      if (!c.wet()) continue;
+      double fraction = wall ? c.eps_activation : 0.5 * c.eps_activation;
+      if (c.grid_spacing > 0.0) {    // reach 0.75 dx whatever the radii
+        if (!(r_min > 0.0)) return -1.0;
+        fraction = 0.75 * c.grid_spacing / (wall ? r_min : 2.0 * r_min);
+      }
+      reach = std::max(reach, fraction);
+    }
+  return reach;
+}
+
+inline std::string missed_approach_warning(double u_n, double dt, double factor)
+{
+  return "model lubricated: an impact at normal speed " + std::to_string(std::fabs(u_n)) +
+      " started farther away than the contact distance (contact_distance_factor " +
+      std::to_string(factor) + ") one step before; its first contact step is integrated "
+      "approximately. Raise neigh_modify contact_distance_factor so that (factor - 1) (r_i + r_j) "
+      "exceeds the largest approach per step (" + std::to_string(std::fabs(u_n) * dt) + ")";
+}
+
+}    // namespace liggghts
+}    // namespace lubricated

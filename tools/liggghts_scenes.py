@@ -1,0 +1,102 @@
+"""LIGGGHTS input scripts for the impact scenes of scenes.py (same sphere, speed and film).
+
+The LAMMPS plugin's fix wall/lubrication and pair_coeff keywords map onto LIGGGHTS
+properties (src/liggghts/lubricated_properties.h): e_d -> coefficientRestitution (type 2 is
+the wall), ncontact -> lubricatedContactSteps, viscosity -> lubricatedViscosity,
+activation -> lubricatedActivation.
+"""
+import math
+
+from scenes import EPS_AL, R, RHO, U, WET_DT
+
+HEADER = """atom_style granular
+atom_modify map array
+communicate single vel yes
+newton off
+units si
+"""
+
+
+def properties(e_dry, mu, ncontact, e_wall=None, friction=None):
+    e_wall = e_dry if e_wall is None else e_wall
+    text = (f"fix m1 all property/global coefficientRestitution peratomtypepair 2 "
+            f"{e_dry} {e_wall} {e_wall} {e_wall}\n"
+            f"fix m2 all property/global lubricatedContactSteps scalar {ncontact}\n")
+    if mu > 0:
+        text += (f"fix m3 all property/global lubricatedViscosity scalar {mu}\n"
+                 f"fix m4 all property/global lubricatedActivation scalar {EPS_AL}\n")
+    if friction is not None:
+        text += f"fix m5 all property/global coefficientFriction peratomtypepair 2 {' '.join([str(friction)] * 4)}\n"
+    return text
+
+
+def wall_bounce(e_dry, dt_ru=WET_DT, mu=0.0, ncontact=8, gap0=0.2137, model="model lubricated"):
+    """scenes.wall_bounce in LIGGGHTS: prints RESULT e and RESULT contact_steps."""
+    dt = dt_ru * R / U
+    travel = (2.0 * gap0 + 2.0 * EPS_AL + 0.2) * R / U
+    steps = int(math.ceil(travel / dt)) + 8 * ncontact
+    return HEADER + f"""boundary p p f
+region box block -0.01 0.01 -0.01 0.01 0 0.02 units box
+create_box 2 box
+neighbor {0.5 * R} bin
+neigh_modify delay 0
+{properties(e_dry, mu, ncontact)}
+pair_style gran {model}
+pair_coeff * *
+fix wall all wall/gran {model} primitive type 2 zplane 0.0
+create_atoms 1 single 0 0 {R * (1 + gap0)} units box
+set atom 1 diameter {2 * R} density {RHO}
+velocity all set 0 0 {-U} units box
+fix nve all nve/sphere
+timestep {dt}
+variable overlap equal "z[1] < {R}"
+fix count all ave/time 1 1 1 v_overlap mode scalar ave running
+thermo_style custom step atoms
+thermo {steps}
+run {steps}
+variable e equal vz[1]/{U}
+variable n equal f_count*{steps + 1}
+print "RESULT e ${{e}}"
+print "RESULT contact_steps ${{n}}"
+"""
+
+
+def pair_bounce(e_dry, mass_ratio=1.0, dt_ru=WET_DT, mu=0.0, ncontact=8, gap0=0.2137,
+                radius_ratio=1.0, x_offset=0.0, skin=0.5 * R, model="model lubricated"):
+    """scenes.pair_bounce in LIGGGHTS: two spheres head-on along x, centre-of-mass frame."""
+    dt = dt_ru * R / U
+    r2 = radius_ratio * R
+    rho2 = RHO * mass_ratio / radius_ratio**3
+    v1, v2 = U * mass_ratio / (1 + mass_ratio), -U / (1 + mass_ratio)
+    x1 = x_offset - R - 0.5 * gap0 * R
+    x2 = x_offset + r2 + 0.5 * gap0 * R
+    travel = (2.0 * gap0 + 4.0 * EPS_AL + 0.2) * R / U
+    half = max(0.01, 3.0 * (R + r2))
+    steps = int(math.ceil(travel / dt)) + 8 * ncontact
+    return HEADER + f"""boundary p p p
+region box block -{half} {half} -{half} {half} -{half} {half} units box
+create_box 2 box
+neighbor {skin} bin
+neigh_modify delay 0
+{properties(e_dry, mu, ncontact)}
+pair_style gran {model}
+pair_coeff * *
+create_atoms 1 single {x1} 0 0 units box
+create_atoms 1 single {x2} 0 0 units box
+set atom 1 diameter {2 * R} density {RHO}
+set atom 2 diameter {2 * r2} density {rho2}
+velocity all set 0 0 0 units box
+set atom 1 vx {v1}
+set atom 2 vx {v2}
+fix nve all nve/sphere
+timestep {dt}
+variable overlap equal "(x[2]-x[1]) < {R + r2}"
+fix count all ave/time 1 1 1 v_overlap mode scalar ave running
+thermo_style custom step atoms
+thermo {steps}
+run {steps}
+variable e equal (vx[2]-vx[1])/{U}
+variable n equal f_count*{steps + 1}
+print "RESULT e ${{e}}"
+print "RESULT contact_steps ${{n}}"
+"""
