@@ -4,12 +4,17 @@ PY     := $(VENV)/bin/python
 BUILD  := build
 JOBS   ?= 2
 
-.PHONY: all setup build demo test test-kernel test-lammps bench report fluidized-bed clean
+.PHONY: all setup setup-liggghts build demo test test-kernel test-lammps test-liggghts bench \
+        bench-liggghts report fluidized-bed liggghts-demo clean
 
 all: build
 
 setup:
 	@bash scripts/setup.sh
+
+# Debian's LIGGGHTS for model lubricated (installed as root, else skipped with a message).
+setup-liggghts:
+	@bash scripts/setup_liggghts.sh
 
 build: setup
 	@cmake -S . -B $(BUILD) -DLAMMPS_PYTHON=$(CURDIR)/$(PY) >/dev/null
@@ -19,7 +24,7 @@ build: setup
 demo: build
 	$(PY) examples/wall_bounce/st_sweep.py --out $(BUILD)/demo
 
-test: build test-kernel test-lammps
+test: setup-liggghts build test-kernel test-lammps test-liggghts
 
 test-kernel:
 	cd $(BUILD) && ctest --output-on-failure
@@ -27,11 +32,23 @@ test-kernel:
 test-lammps:
 	$(PY) -m pytest tests/lammps -q -p no:cacheprovider
 
+# LIGGGHTS runs of model lubricated (skipped, with the reason, when LIGGGHTS is absent).
+test-liggghts:
+	$(PY) -m pytest tests/liggghts -q -rs -p no:cacheprovider
+
 # Settling-bed throughput against gran/hooke, fluidised-bed scaling with the drag fix
 # (bench/RESULTS.md and bench/SCALING.md hold the last figures).
 bench: build
 	$(PY) bench/settling_bed.py --out $(BUILD)/bench
 	$(PY) bench/bed_scaling.py --out $(BUILD)/bed_scaling
+
+# LIGGGHTS settling bed: model lubricated against model hooke/stiffness (bench/RESULTS_LIGGGHTS.md).
+bench-liggghts: setup-liggghts build
+	$(PY) bench/liggghts_settling_bed.py --out $(BUILD)/bench-liggghts
+
+# The wall-bounce St sweep in LIGGGHTS syntax (examples/liggghts).
+liggghts-demo: setup-liggghts build
+	$(PY) examples/liggghts/st_sweep.py --out $(BUILD)/liggghts-demo
 
 # Restitution error against run time and stability over N_c, dt and integrator.
 report: build

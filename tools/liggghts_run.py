@@ -48,8 +48,9 @@ def run(script, workdir, nprocs=1, name="in.liggghts", timeout=600, check=True, 
     workdir.mkdir(parents=True, exist_ok=True)
     (workdir / name).write_text(script)
     log = workdir / (name + ".log")
-    args = command(nprocs, launcher, preload) + ["-in", name, "-log", log.name, "-screen", "none",
-                                                 "-echo", "none"]
+    # A screen file, not "-screen none": LIGGGHTS's mesh reader prints to screen unchecked.
+    args = command(nprocs, launcher, preload) + ["-in", name, "-log", log.name,
+                                                 "-screen", name + ".screen", "-echo", "none"]
     for key, value in (variables or {}).items():
         args += ["-var", key, str(value)]
     env = dict(os.environ)
@@ -58,9 +59,10 @@ def run(script, workdir, nprocs=1, name="in.liggghts", timeout=600, check=True, 
         env["LD_PRELOAD"] = str(LIBRARY)
     env["OMP_NUM_THREADS"] = "1"
     env["OMPI_MCA_btl_vader_single_copy_mechanism"] = "none"
+    # errors="replace": LIGGGHTS prints some ERROR texts a second time from freed memory.
     proc = subprocess.run(args, cwd=workdir, env=env, capture_output=True, text=True,
-                          timeout=timeout)
-    text = log.read_text() if log.exists() else ""
+                          encoding="utf-8", errors="replace", timeout=timeout)
+    text = log.read_text(errors="replace") if log.exists() else ""
     text += proc.stdout + proc.stderr
     if check and (proc.returncode != 0 or "ERROR" in text):
         error = next((line for line in text.splitlines() if "ERROR" in line), text[-2000:])

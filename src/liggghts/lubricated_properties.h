@@ -82,6 +82,7 @@ inline bool read_scalar(LAMMPS_NS::Modify *modify, const char *name, const char 
 inline std::vector<Coefficients> read_coefficients(LAMMPS_NS::Modify *modify, int ntypes,
                                                    const char *caller, std::string &message)
 {
+  message.clear();
   std::vector<Coefficients> table((ntypes + 1) * (ntypes + 1));
   auto *restitution = static_cast<LAMMPS_NS::FixPropertyGlobal *>(modify->find_fix_property(
       "coefficientRestitution", "property/global", "peratomtypepair", ntypes, ntypes, caller));
@@ -128,6 +129,7 @@ inline std::vector<Coefficients> read_coefficients(LAMMPS_NS::Modify *modify, in
 inline std::vector<NormalModel> build_models(const std::vector<Coefficients> &table, int ntypes,
                                              bool wall, double dt, std::string &message)
 {
+  message.clear();
   std::vector<NormalModel> models(table.size());
   for (int i = 1; i <= ntypes; i++)
     for (int j = 1; j <= ntypes; j++) {
@@ -167,11 +169,11 @@ inline double reach_fraction(const std::vector<Coefficients> &table, int ntypes,
 
 inline std::string missed_approach_warning(double u_n, double dt, double factor)
 {
-  return "model lubricated: an impact at normal speed " + std::to_string(std::fabs(u_n)) +
+  return "model lubricated: an impact at normal speed " + detail::number(std::fabs(u_n)) +
       " started farther away than the contact distance (contact_distance_factor " +
-      std::to_string(factor) + ") one step before; its first contact step is integrated "
+      detail::number(factor) + ") one step before; its first contact step is integrated "
       "approximately. Raise neigh_modify contact_distance_factor so that (factor - 1) (r_i + r_j) "
-      "exceeds the largest approach per step (" + std::to_string(std::fabs(u_n) * dt) + ")";
+      "exceeds the largest approach per step (" + detail::number(std::fabs(u_n) * dt) + ")";
 }
 
 }    // namespace liggghts

@@ -60,9 +60,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     ntypes_ = atom->ntypes;
     if (!atom->radius_flag || !atom->rmass_flag)
       error->all(FLERR, "model lubricated requires atom_style sphere (per-atom radius and rmass)");
-    std::string message;
-    coefficients_ = lubricated::liggghts::read_coefficients(modify, ntypes_, caller, message);
-    if (!message.empty()) error->all(FLERR, message.c_str());
+    coefficients_ = lubricated::liggghts::read_coefficients(modify, ntypes_, caller, message_);
+    if (!message_.empty()) fail(message_);
     build_models();
 
     // The film acts up to its reach beyond contact; the step-exact contact also needs one step
@@ -135,6 +134,15 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   }
 
  private:
+  // LIGGGHTS's Error::all throws with a pointer to the text, printed after the pair style (and
+  // this model) are gone: the text must outlive them.
+  void fail(const std::string &message)
+  {
+    static std::string text;
+    text = message;
+    error->all(FLERR, text.c_str());
+  }
+
   void apply(double force, const double *en, ForceData &i_forces, ForceData &j_forces) const
   {
     for (int d = 0; d < 3; d++) {
@@ -147,9 +155,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   void build_models()
   {
     dt_ = update->dt;
-    std::string message;
-    models_ = lubricated::liggghts::build_models(coefficients_, ntypes_, is_wall_, dt_, message);
-    if (!message.empty()) error->all(FLERR, message.c_str());
+    models_ = lubricated::liggghts::build_models(coefficients_, ntypes_, is_wall_, dt_, message_);
+    if (!message_.empty()) fail(message_);
   }
 
   // A contact whose previous step was not evaluated: its entry is integrated approximately.
@@ -157,13 +164,13 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   {
     if (warned_) return;
     warned_ = true;
-    const std::string msg = lubricated::liggghts::missed_approach_warning(
-        u_n, dt_, neighbor->contactDistanceFactor);
-    error->warning(FLERR, msg.c_str(), 0);
+    message_ = lubricated::liggghts::missed_approach_warning(u_n, dt_, neighbor->contactDistanceFactor);
+    error->warning(FLERR, message_.c_str());
   }
 
   bool is_wall_;
   bool warned_ = false;
+  std::string message_;
   int ntypes_ = 0;
   double dt_ = -1.0;
   std::vector<lubricated::Coefficients> coefficients_;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -77,9 +78,17 @@ inline bool to_number(const std::string &word, double &value)
   return end && *end == '\0' && std::isfinite(value);
 }
 
+// A value as users typed it (%g), not std::to_string's fixed six decimals (1e-06, not 0.000001).
+inline std::string number(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
 inline std::string range_error(const char *name, double value, const char *allowed)
 {
-  return std::string(name) + " = " + std::to_string(value) + " is out of range (allowed: " +
+  return std::string(name) + " = " + number(value) + " is out of range (allowed: " +
       allowed + ")";
 }
 
@@ -99,8 +108,8 @@ inline std::string validate(const Coefficients &c)
   if (!(c.eps_saturation > 0.0))
     return range_error("saturation", c.eps_saturation, "eps_1 > 0");
   if (!(c.eps_release < c.eps_saturation))
-    return "release = " + std::to_string(c.eps_release) + " must be below saturation = " +
-        std::to_string(c.eps_saturation) + " (eps_2 < eps_1 required)";
+    return "release = " + detail::number(c.eps_release) + " must be below saturation = " +
+        detail::number(c.eps_saturation) + " (eps_2 < eps_1 required)";
   if (!(c.friction >= 0.0)) return range_error("friction", c.friction, "mu_c >= 0");
   if (c.e_tangential != -1.0 && !(c.e_tangential >= 0.0 && c.e_tangential <= 1.0))
     return range_error("tangential", c.e_tangential, "0 <= e_t <= 1");
@@ -111,7 +120,7 @@ inline std::string validate(const Coefficients &c)
       if (c.eps_activation == 0.0)
         return "viscosity > 0 requires the activation (eps_al) or grid (dx) keyword";
       if (!(c.eps_activation > c.eps_saturation && c.eps_activation <= 1.0))
-        return "activation = " + std::to_string(c.eps_activation) +
+        return "activation = " + detail::number(c.eps_activation) +
             " is out of range (allowed: saturation eps_1 < eps_al <= 1)";
     }
   }
@@ -177,8 +186,8 @@ inline std::string parse_coefficients(const std::vector<std::string> &words, siz
 inline std::string validate_time_step(const Coefficients &c, double dt)
 {
   if (c.t_contact > 0.0 && c.steps_per_contact(dt) < 1.0)
-    return "tcontact = " + std::to_string(c.t_contact) + " is shorter than the time step " +
-        std::to_string(dt) + " (N_c = t_c / dt >= 1 required)";
+    return "tcontact = " + detail::number(c.t_contact) + " is shorter than the time step " +
+        detail::number(dt) + " (N_c = t_c / dt >= 1 required)";
   return "";
 }
 
@@ -187,7 +196,7 @@ inline std::string time_step_warning(const Coefficients &c, double dt)
 {
   const double n = c.steps_per_contact(dt);
   if (n < 8.0)
-    return "contact resolved with N_c = " + std::to_string(n) +
+    return "contact resolved with N_c = " + detail::number(n) +
         " steps; the restitution drifts from e_d below N_c = 8";
   return "";
 }

@@ -1,0 +1,77 @@
+"""Bad input ends with a LIGGGHTS ERROR that names the property, its value and the allowed
+range (the kernel's validation, with the LAMMPS keywords replaced by property names); a
+missing model library is reported clearly."""
+import os
+
+import pytest
+
+import liggghts_run
+import liggghts_scenes
+import scenes
+
+GOOD = liggghts_scenes.wall_bounce(0.9, mu=scenes.viscosity_for_stokes(100))
+
+CASES = {
+    "e_d above 1": (("peratomtypepair 2 0.9 0.9 0.9 0.9", "peratomtypepair 2 1.5 0.9 0.9 0.9"),
+                    ["coefficientRestitution = 1.5", "types 1 1", "0 < coefficientRestitution <= 1"]),
+    "e_d zero": (("peratomtypepair 2 0.9 0.9 0.9 0.9", "peratomtypepair 2 0.9 0 0 0.9"),
+                 ["coefficientRestitution = 0", "types 1 2"]),
+    "N_c below 1": (("lubricatedContactSteps scalar 8", "lubricatedContactSteps scalar 0.5"),
+                    ["lubricatedContactSteps = 0.5", "N_c >= 1"]),
+    "negative viscosity": (("lubricatedViscosity scalar 0", "lubricatedViscosity scalar -0"),
+                           ["lubricatedViscosity = -", "mu_f >= 0"]),
+    "activation above 1": (("lubricatedActivation scalar 0.09375", "lubricatedActivation scalar 2"),
+                           ["lubricatedActivation = 2", "eps_al <= 1"]),
+    "release above saturation": (
+        ("lubricatedActivation scalar 0.09375",
+         "lubricatedActivation scalar 0.09375\nfix m9 all property/global lubricatedRelease scalar 0.01"),
+        ["lubricatedRelease = 0.01", "lubricatedSaturation", "eps_2 < eps_1"]),
+    "film without activation": (("fix m4 all property/global lubricatedActivation scalar 0.09375", ""),
+                                ["lubricatedViscosity > 0 requires", "lubricatedActivation",
+                                 "lubricatedGridSpacing"]),
+    "steps and time": (("lubricatedContactSteps scalar 8",
+                        "lubricatedContactSteps scalar 8\nfix m9 all property/global lubricatedContactTime scalar 4e-4"),
+                       ["lubricatedContactSteps and lubricatedContactTime are mutually exclusive"]),
+    "contact shorter than a step": (("lubricatedContactSteps scalar 8", "lubricatedContactTime scalar 1e-6"),
+                                    ["lubricatedContactTime = 1e-06", "shorter than the time step 5e-05"]),
+    "grid not positive": (("lubricatedActivation scalar 0.09375", "lubricatedGridSpacing scalar -1e-4"),
+                          ["lubricatedGridSpacing = -0.0001", "dx > 0"]),
+    "missing restitution": (("fix m1 all property/global coefficientRestitution peratomtypepair 2 0.9 0.9 0.9 0.9", ""),
+                            ["coefficientRestitution", "model lubricated"]),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_error_names_the_property(run, case):
+    (old, new), expected = CASES[case]
+    assert old in GOOD
+    run.lig(GOOD.replace(old, new), check=False)
+    error = next((line for line in run.log.splitlines() if line.startswith("ERROR")), "")
+    for text in expected:
+        assert text in error, (text, error)
+
+
+def test_good_input_runs(run):
+    assert run.lig(GOOD)["e"] > 0.0
+
+
+def test_stock_liggghts_without_the_library_fails(run):
+    """Without the library LIGGGHTS rejects the model name (its own message); with LD_PRELOAD
+    naming a missing file, the loader names that file too."""
+    run.lig(GOOD, preload=False, check=False)
+    assert "ERROR: Invalid model specified" in run.log
+    missing = run.dir / "nowhere" / "liblubricated_liggghts.so"
+    library = liggghts_run.LIBRARY
+    try:
+        liggghts_run.LIBRARY = missing
+        run.lig(GOOD, check=False)
+    finally:
+        liggghts_run.LIBRARY = library
+    assert str(missing) in run.log and "cannot be preloaded" in run.log
+    assert "ERROR: Invalid model specified" in run.log
+
+
+def test_runner_names_a_missing_library(monkeypatch, tmp_path):
+    monkeypatch.setattr(liggghts_run, "LIBRARY", tmp_path / "liblubricated_liggghts.so")
+    assert "liblubricated_liggghts.so" in liggghts_run.available()
+    assert os.path.exists(liggghts_run.LIGGGHTS)
