@@ -94,3 +94,14 @@ TEST(Coefficients, TimeStepChecks)
   EXPECT_NE(time_step_warning(c, 2e-5).find("N_c = 5"), std::string::npos);
   EXPECT_EQ(time_step_warning(c, 1e-5), "");
 }
+
+// Messages quote values as users type them (%g), so 1e-06 reads as 1e-06, not 0.000001.
+TEST(Coefficients, MessagesQuoteValuesAsTyped)
+{
+  Coefficients c;
+  EXPECT_NE(parse("1.5", c).find("e_d = 1.5 is out of range"), std::string::npos);
+  ASSERT_EQ(parse("0.9 tcontact 1e-6", c), "");
+  const std::string message = validate_time_step(c, 5e-5);
+  EXPECT_NE(message.find("tcontact = 1e-06 is shorter than the time step 5e-05"), std::string::npos)
+      << message;
+}
