@@ -316,3 +316,44 @@ neigh_modify every 1 delay 0 check no
 run 600
 """ + dump_state(4), nprocs=nprocs, name="in.restart")
     assert_same(reference, restarted)
+
+
+def order_flip_scene(newton="on"):
+    """Two spheres meeting across x = 0 (the boundary of a 2 x 1 x 1 grid) while sliding past
+    each other in y: their y order flips during the contact. A half list under newton on
+    keeps a cross-rank pair on the rank of the atom whose bin sorts lower (z, then y, then x);
+    bins of size R put a bin boundary at y = 0, so the flip moves the pair to the other rank,
+    which computes it with the history it received for its atom by reverse communication at
+    the last rebuild (every step here). Losing that copy would restart the tangential spring
+    from zero and change the motion."""
+    dt = 0.005 * R / U
+    return scenes.HEADER.replace("${newton}", newton) + f"""
+boundary p p p
+region box block -0.006 0.006 -0.002 0.002 -0.002 0.002
+create_box 1 box
+create_atoms 1 single {-1.005 * R} {-0.03 * R} {0.5 * R}
+create_atoms 1 single {1.005 * R} {0.03 * R} {0.5 * R}
+set atom * diameter {2 * R} density {RHO}
+velocity all set 0 0 0
+set atom 1 vx {0.1 * U} vy {0.1 * U}
+set atom 2 vx {-0.1 * U} vy {-0.1 * U}
+pair_style lubricated/springdashpot
+pair_coeff * * 0.8 ncontact 128 friction 0.3 tangential 0.6
+fix nve all nve/sphere
+timestep {dt}
+neighbor {0.5 * R} bin
+neigh_modify every 1 delay 0 check no binsize {R}
+run 200
+"""
+
+
+def test_history_follows_a_pair_that_changes_rank(lmp):
+    serial = lmp(order_flip_scene() + dump_state(2))
+    parallel = lmp(order_flip_scene() + dump_state(2), nprocs=2)
+    assert "2 by 1 by 1 MPI processor grid" in lmp.log
+    assert serial.keys() == parallel.keys() and len(serial) == 4
+    for key in serial:
+        assert parallel[key] == pytest.approx(serial[key], rel=1e-10, abs=1e-13), key
+    # Friction acted on the sliding (the relative y speed was 0.2 U) and the order flipped.
+    assert abs(serial["v1"][1] - serial["v2"][1]) < 0.15 * U
+    assert serial["x1"][1] > serial["x2"][1]
