@@ -8,7 +8,7 @@ Each run is examples/liggghts/in.settling_bed (one rank, stock liggghts + LD_PRE
 glass beads (d = 2 mm, 2500 kg/m^3) on a staggered lattice fall onto a floor and settle
 (--steps, dt = 1e-5 s), then run --settled more steps on the settled bed. Both phases are
 timed from LIGGGHTS's "Loop time" lines. Width n makes the box n times wider in x and y
-(2352 spheres at n = 1, 21168 at n = 3). Models (tangential history, friction 0.5 everywhere):
+(2254 spheres at n = 1, 20286 at n = 3). Models (tangential history, friction 0.5 everywhere):
 
   hooke/stiffness   kn = m_e (pi^2 + ln^2 e)/t_c^2, gamman = 2 ln(1/e)/t_c per unit m_e,
                     kt = 2/7 kn, gammat = 2/7 gamman (what model lubricated gives LIGGGHTS's
