@@ -5,9 +5,7 @@ properties (src/liggghts/lubricated_properties.h): e_d -> coefficientRestitution
 the wall), ncontact -> lubricatedContactSteps, viscosity -> lubricatedViscosity,
 activation -> lubricatedActivation.
 """
-import math
-
-from scenes import EPS_AL, R, RHO, U, WET_DT
+from scenes import EPS_AL, R, RHO, U, WET_DT, pair_bounce_layout, wall_bounce_steps
 
 HEADER = """atom_style granular
 atom_modify map array
@@ -33,8 +31,7 @@ def properties(e_dry, mu, ncontact, e_wall=None, friction=None):
 def wall_bounce(e_dry, dt_ru=WET_DT, mu=0.0, ncontact=8, gap0=0.2137, model="model lubricated"):
     """scenes.wall_bounce in LIGGGHTS: prints RESULT e and RESULT contact_steps."""
     dt = dt_ru * R / U
-    travel = (2.0 * gap0 + 2.0 * EPS_AL + 0.2) * R / U
-    steps = int(math.ceil(travel / dt)) + 8 * ncontact
+    steps = wall_bounce_steps(dt_ru, gap0, ncontact)
     return HEADER + f"""boundary p p f
 region box block -0.01 0.01 -0.01 0.01 0 0.02 units box
 create_box 2 box
@@ -65,14 +62,8 @@ def pair_bounce(e_dry, mass_ratio=1.0, dt_ru=WET_DT, mu=0.0, ncontact=8, gap0=0.
                 radius_ratio=1.0, x_offset=0.0, skin=0.5 * R, model="model lubricated"):
     """scenes.pair_bounce in LIGGGHTS: two spheres head-on along x, centre-of-mass frame."""
     dt = dt_ru * R / U
-    r2 = radius_ratio * R
-    rho2 = RHO * mass_ratio / radius_ratio**3
-    v1, v2 = U * mass_ratio / (1 + mass_ratio), -U / (1 + mass_ratio)
-    x1 = x_offset - R - 0.5 * gap0 * R
-    x2 = x_offset + r2 + 0.5 * gap0 * R
-    travel = (2.0 * gap0 + 4.0 * EPS_AL + 0.2) * R / U
-    half = max(0.01, 3.0 * (R + r2))
-    steps = int(math.ceil(travel / dt)) + 8 * ncontact
+    r2, rho2, x1, x2, v1, v2, half, steps = pair_bounce_layout(
+        mass_ratio, dt_ru, ncontact, gap0, radius_ratio, x_offset)
     return HEADER + f"""boundary p p p
 region box block -{half} {half} -{half} {half} -{half} {half} units box
 create_box 2 box

@@ -39,6 +39,31 @@ def duration(ncontact, tcontact_ru):
     return f"tcontact {tcontact_ru * R / U}" if tcontact_ru else f"ncontact {ncontact}"
 
 
+def wall_bounce_steps(dt_ru, gap0, ncontact, tcontact_ru=None):
+    """Steps for the wall bounce: in, contact and out of the film, with margin."""
+    dt = dt_ru * R / U
+    travel = (2.0 * gap0 + 2.0 * EPS_AL + 0.2) * R / U
+    return int(math.ceil(travel / dt)) + 8 * ncontact + (
+        int(4 * tcontact_ru * R / U / dt) if tcontact_ru else 0)
+
+
+def pair_bounce_layout(mass_ratio, dt_ru, ncontact, gap0, radius_ratio, x_offset, tcontact_ru=None):
+    """The pair bounce's geometry (shared with the LIGGGHTS scene): radius and density of
+    sphere 2, start positions and velocities along x (centre-of-mass frame), box half-width,
+    steps."""
+    dt = dt_ru * R / U
+    r2 = radius_ratio * R
+    rho2 = RHO * mass_ratio / radius_ratio**3
+    v1, v2 = U * mass_ratio / (1 + mass_ratio), -U / (1 + mass_ratio)
+    x1 = x_offset - R - 0.5 * gap0 * R
+    x2 = x_offset + r2 + 0.5 * gap0 * R
+    travel = (2.0 * gap0 + 4.0 * EPS_AL + 0.2) * R / U
+    half = max(0.01, 3.0 * (R + r2))
+    steps = int(math.ceil(travel / dt)) + 8 * ncontact + (
+        int(4 * tcontact_ru * R / U / dt) if tcontact_ru else 0)
+    return r2, rho2, x1, x2, v1, v2, half, steps
+
+
 def wall_bounce(e_dry, dt_ru=WET_DT, mu=0.0, ncontact=8, extra="", gap0=0.2137, steps=None,
                 tcontact_ru=None, integrator="nve/sphere"):
     """A sphere starting gap0*R above a zplane wall, moving down at U.
@@ -46,9 +71,7 @@ def wall_bounce(e_dry, dt_ru=WET_DT, mu=0.0, ncontact=8, extra="", gap0=0.2137, 
     Prints RESULT e (rebound/impact speed), RESULT contact_steps (steps with overlap).
     """
     dt = dt_ru * R / U
-    travel = (2.0 * gap0 + 2.0 * EPS_AL + 0.2) * R / U     # in, contact, out of the film
-    steps = steps or int(math.ceil(travel / dt)) + 8 * ncontact + (
-        int(4 * tcontact_ru * R / U / dt) if tcontact_ru else 0)
+    steps = steps or wall_bounce_steps(dt_ru, gap0, ncontact, tcontact_ru)
     wet = f"viscosity {mu} activation {EPS_AL}" if mu > 0 else ""
     return HEADER.replace("${newton}", "on") + f"""
 region box block -0.01 0.01 -0.01 0.01 0 0.02
@@ -81,16 +104,8 @@ def pair_bounce(e_dry, mass_ratio=1.0, dt_ru=WET_DT, mu=0.0, ncontact=8, gap0=0.
     Prints RESULT e (relative separation / approach speed) and RESULT contact_steps.
     """
     dt = dt_ru * R / U
-    r2 = radius_ratio * R
-    rho2 = RHO * mass_ratio / radius_ratio**3
-    m1, m2 = 1.0, mass_ratio
-    v1, v2 = U * m2 / (m1 + m2), -U * m1 / (m1 + m2)
-    x1 = x_offset - R - 0.5 * gap0 * R
-    x2 = x_offset + r2 + 0.5 * gap0 * R
-    travel = (2.0 * gap0 + 4.0 * EPS_AL + 0.2) * R / U
-    half = max(0.01, 3.0 * (R + r2))
-    steps = int(math.ceil(travel / dt)) + 8 * ncontact + (
-        int(4 * tcontact_ru * R / U / dt) if tcontact_ru else 0)
+    r2, rho2, x1, x2, v1, v2, half, steps = pair_bounce_layout(
+        mass_ratio, dt_ru, ncontact, gap0, radius_ratio, x_offset, tcontact_ru)
     wet = f"viscosity {mu} activation {EPS_AL}" if mu > 0 else ""
     return HEADER.replace("${newton}", newton) + f"""
 boundary p p p

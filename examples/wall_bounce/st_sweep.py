@@ -2,7 +2,6 @@
 LAMMPS runs of examples/wall_bounce/in.wall_bounce, with Legendre's law exp(-35/St) drawn
 over it. Writes st_sweep.csv and st_sweep.png to --out."""
 import argparse
-import csv
 import math
 import pathlib
 import sys
@@ -10,10 +9,7 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools"))
 import lammps_run  # noqa: E402
-
-import matplotlib  # noqa: E402
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+import st_sweep_output  # noqa: E402
 
 STOKES = [5, 10, 15, 20, 30, 50, 75, 100, 150, 200, 300, 500, 750, 1000, 2000]
 E_DRY = 0.9
@@ -40,24 +36,9 @@ def main():
         print(f"St = {st:6g}   e/e_d = {ratio:.4f}   exp(-35/St) = {legendre:.4f}   "
               f"difference = {ratio - legendre:+.4f}")
 
-    with open(out / "st_sweep.csv", "w", newline="") as fh:
-        writer = csv.DictWriter(fh, fieldnames=list(rows[0]))
-        writer.writeheader()
-        writer.writerows(rows)
-
-    fig, ax = plt.subplots(figsize=(6, 4))
-    st_line = [10 ** (k / 50) for k in range(25, 176)]
-    ax.semilogx(st_line, [math.exp(-35 / s) for s in st_line], "k-", label="Legendre et al. (2005): exp(-35/St)")
-    ax.semilogx([r["St"] for r in rows], [r["e_over_ed"] for r in rows], "o", color="tab:orange",
-                label=f"LAMMPS + lubricated plugin (e_d = {E_DRY}, N_c = 8)")
-    ax.set_xlabel("Stokes number St = (2/9) rho_p R U / mu_f")
-    ax.set_ylabel("e / e_d")
-    ax.set_ylim(-0.05, 1.05)
-    ax.set_title("Wet particle-wall restitution")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(loc="upper left", fontsize=8)
-    fig.tight_layout()
-    fig.savefig(out / "st_sweep.png", dpi=120)
+    st_sweep_output.write_csv(out / "st_sweep.csv", rows)
+    st_sweep_output.plot(out / "st_sweep.png", rows,
+                         f"LAMMPS + lubricated plugin (e_d = {E_DRY}, N_c = 8)")
     worst = max(abs(r["difference"]) for r in rows if 50 <= r["St"] <= 1000)
     print(f"wrote {out / 'st_sweep.csv'} and {out / 'st_sweep.png'}")
     print(f"largest |e/e_d - exp(-35/St)| for 50 <= St <= 1000: {worst:.3f}")

@@ -68,7 +68,7 @@ inline std::string with_property_names(std::string message)
   return out;
 }
 
-// An optional scalar property; false when absent.
+// An optional scalar property: sets value and returns true when it exists.
 inline bool read_scalar(LAMMPS_NS::Modify *modify, const char *name, const char *caller, double &value)
 {
   auto *fix = static_cast<LAMMPS_NS::FixPropertyGlobal *>(
@@ -86,39 +86,24 @@ inline std::vector<Coefficients> read_coefficients(LAMMPS_NS::Modify *modify, in
   std::vector<Coefficients> table((ntypes + 1) * (ntypes + 1));
   auto *restitution = static_cast<LAMMPS_NS::FixPropertyGlobal *>(modify->find_fix_property(
       "coefficientRestitution", "property/global", "peratomtypepair", ntypes, ntypes, caller));
-  Coefficients common;
-  double value = 0.0;
-  const bool have_n = read_scalar(modify, "lubricatedContactSteps", caller, value);
-  if (have_n) common.n_contact = value;
-  const bool have_t = read_scalar(modify, "lubricatedContactTime", caller, value);
-  if (have_t) common.t_contact = value;
-  if (read_scalar(modify, "lubricatedViscosity", caller, value)) common.viscosity = value;
-  const bool have_al = read_scalar(modify, "lubricatedActivation", caller, value);
-  if (have_al) common.eps_activation = value;
-  const bool have_dx = read_scalar(modify, "lubricatedGridSpacing", caller, value);
-  if (have_dx) common.grid_spacing = value;
-  if (read_scalar(modify, "lubricatedSaturation", caller, value)) common.eps_saturation = value;
-  if (read_scalar(modify, "lubricatedRelease", caller, value)) common.eps_release = value;
-
-  const std::string prefix = std::string(caller) + ": ";
-  if (have_n && have_t)
-    message = prefix + "lubricatedContactSteps and lubricatedContactTime are mutually exclusive";
-  else if (have_al && have_dx)
-    message = prefix + "lubricatedActivation and lubricatedGridSpacing are mutually exclusive";
-  else if (have_t && !(common.t_contact > 0.0))
-    message = prefix + with_property_names(detail::range_error("tcontact", common.t_contact, "t_c > 0"));
-  else if (have_dx && !(common.grid_spacing > 0.0))
-    message = prefix + with_property_names(detail::range_error("grid", common.grid_spacing, "dx > 0"));
-  if (!message.empty()) return table;
+  Coefficients common;    // defaults unless the property exists (read_scalar leaves them)
+  Given given;
+  given.ncontact = read_scalar(modify, "lubricatedContactSteps", caller, common.n_contact);
+  given.tcontact = read_scalar(modify, "lubricatedContactTime", caller, common.t_contact);
+  read_scalar(modify, "lubricatedViscosity", caller, common.viscosity);
+  given.activation = read_scalar(modify, "lubricatedActivation", caller, common.eps_activation);
+  given.grid = read_scalar(modify, "lubricatedGridSpacing", caller, common.grid_spacing);
+  read_scalar(modify, "lubricatedSaturation", caller, common.eps_saturation);
+  read_scalar(modify, "lubricatedRelease", caller, common.eps_release);
 
   for (int i = 1; i <= ntypes; i++)
     for (int j = 1; j <= ntypes; j++) {
       Coefficients c = common;
       c.e_dry = restitution->compute_array(i - 1, j - 1);
-      const std::string error = validate(c);
+      const std::string error = validate_given(c, given);    // the pair_coeff checks
       if (!error.empty()) {
-        message = prefix + "types " + std::to_string(i) + " " + std::to_string(j) + ": " +
-            with_property_names(error);
+        message = std::string(caller) + ": types " + std::to_string(i) + " " + std::to_string(j) +
+            ": " + with_property_names(error);
         return table;
       }
       table[i * (ntypes + 1) + j] = c;

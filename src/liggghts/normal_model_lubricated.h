@@ -98,7 +98,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
 
     // Tangential and rolling models of LIGGGHTS read these: the solid contact force for the
     // Coulomb limit, and a tangential spring-dashpot with the normal period and restitution
-    // for a tangential mass 2/7 m_e (kt = 2/7 k, gammat = 2/7 c).
+    // for the tangential mass 2/7 m_e of spheres (src/lubricated/tangential.h; Costa et al.,
+    // PRE 92, 053012, 2015): kt = 2/7 k [force/length], gammat = 2/7 c [mass/time].
     sidata.Fn = fn.contact;
     sidata.kn = m_e * model.contact.stiffness_per_mass;
     sidata.gamman = m_e * model.contact.damping_per_mass;

@@ -127,6 +127,26 @@ inline std::string validate(const Coefficients &c)
   return "";
 }
 
+// Which of the keywords with alternatives or sentinel defaults were given (pair_coeff words,
+// or LIGGGHTS properties that exist).
+struct Given {
+  bool ncontact = false, tcontact = false, activation = false, grid = false, tangential = false;
+};
+
+// The checks that depend on which keywords were given, then validate().
+inline std::string validate_given(const Coefficients &c, const Given &given)
+{
+  if (given.ncontact && given.tcontact) return "ncontact and tcontact are mutually exclusive";
+  if (given.activation && given.grid) return "activation and grid are mutually exclusive";
+  if (given.tangential && !(c.e_tangential >= 0.0 && c.e_tangential <= 1.0))
+    return detail::range_error("tangential", c.e_tangential, "0 <= e_t <= 1");
+  if (given.tcontact && !(c.t_contact > 0.0))
+    return detail::range_error("tcontact", c.t_contact, "t_c > 0");
+  if (given.grid && !(c.grid_spacing > 0.0))
+    return detail::range_error("grid", c.grid_spacing, "dx > 0");
+  return validate(c);
+}
+
 // Parses "e_d keyword value ..." from words[first..]; returns "" on success, else a message
 // naming the offending word. The result is validated.
 inline std::string parse_coefficients(const std::vector<std::string> &words, size_t first,
@@ -136,7 +156,7 @@ inline std::string parse_coefficients(const std::vector<std::string> &words, siz
   if (words.size() <= first) return "missing e_d (dry restitution coefficient)";
   if (!detail::to_number(words[first], c.e_dry))
     return "expected a number for e_d, got '" + words[first] + "'";
-  bool have_n = false, have_t = false, have_al = false, have_dx = false, have_et = false;
+  Given given;
   for (size_t i = first + 1; i < words.size(); i += 2) {
     const std::string &key = words[i];
     if (key == "integration") {
@@ -154,15 +174,15 @@ inline std::string parse_coefficients(const std::vector<std::string> &words, siz
       continue;
     }
     double *target = nullptr;
-    if (key == "ncontact") target = &c.n_contact, have_n = true;
-    else if (key == "tcontact") target = &c.t_contact, have_t = true;
+    if (key == "ncontact") target = &c.n_contact, given.ncontact = true;
+    else if (key == "tcontact") target = &c.t_contact, given.tcontact = true;
     else if (key == "viscosity") target = &c.viscosity;
-    else if (key == "activation") target = &c.eps_activation, have_al = true;
-    else if (key == "grid") target = &c.grid_spacing, have_dx = true;
+    else if (key == "activation") target = &c.eps_activation, given.activation = true;
+    else if (key == "grid") target = &c.grid_spacing, given.grid = true;
     else if (key == "saturation") target = &c.eps_saturation;
     else if (key == "release") target = &c.eps_release;
     else if (key == "friction") target = &c.friction;
-    else if (key == "tangential") target = &c.e_tangential, have_et = true;
+    else if (key == "tangential") target = &c.e_tangential, given.tangential = true;
     else if (key == "rolling") target = &c.rolling_friction;
     else
       return "unknown keyword '" + key +
@@ -172,14 +192,7 @@ inline std::string parse_coefficients(const std::vector<std::string> &words, siz
     if (!detail::to_number(words[i + 1], *target))
       return "expected a number for keyword " + key + ", got '" + words[i + 1] + "'";
   }
-  if (have_n && have_t) return "ncontact and tcontact are mutually exclusive";
-  if (have_al && have_dx) return "activation and grid are mutually exclusive";
-  if (have_et && !(c.e_tangential >= 0.0 && c.e_tangential <= 1.0))
-    return detail::range_error("tangential", c.e_tangential, "0 <= e_t <= 1");
-  if (have_t && !(c.t_contact > 0.0)) return detail::range_error("tcontact", c.t_contact, "t_c > 0");
-  if (have_dx && !(c.grid_spacing > 0.0))
-    return detail::range_error("grid", c.grid_spacing, "dx > 0");
-  return validate(c);
+  return validate_given(c, given);
 }
 
 // Checks that depend on the time step; returns "" when fine.

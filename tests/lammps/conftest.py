@@ -7,8 +7,10 @@ import pytest
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools"))
+sys.path.insert(0, str(ROOT / "tests"))
 
 import lammps_run  # noqa: E402
+from scratch_support import pytest_runtest_makereport, scratch_directory  # noqa: E402,F401
 
 SCRATCH = ROOT / "build" / "test-scratch"
 
@@ -23,20 +25,7 @@ def plugin_built():
 @pytest.fixture
 def scratch(request):
     """A scratch directory under build/, removed again when the test passes."""
-    path = SCRATCH / request.node.name.replace("[", "_").replace("]", "").replace("/", "_")
-    shutil.rmtree(path, ignore_errors=True)
-    path.mkdir(parents=True)
-    yield path
-    if not getattr(request.node, "failed", False):
-        shutil.rmtree(path, ignore_errors=True)
-
-
-@pytest.hookimpl(hookwrapper=True)
-def pytest_runtest_makereport(item, call):
-    outcome = yield
-    report = outcome.get_result()
-    if report.when == "call" and report.failed:
-        item.failed = True
+    yield from scratch_directory(request, SCRATCH)
 
 
 @pytest.fixture

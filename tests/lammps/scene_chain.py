@@ -7,7 +7,8 @@ import scenes
 R = scenes.R
 
 
-def chain(newton="on", steps=600, extra_run=""):
+def chain_layout():
+    """(x, y, radius, vx) of the 8 spheres (shared with the LIGGGHTS chain); vy = 0.01 (k - 3)."""
     pos = []
     x = -6.68 * R
     for k in range(8):
@@ -15,6 +16,11 @@ def chain(newton="on", steps=600, extra_run=""):
         x += radius
         pos.append((x, 0.05 * R * (k % 3), radius, 0.1 if k % 2 == 0 else -0.1))
         x += radius + 0.07 * R
+    return pos
+
+
+def chain(newton="on", steps=600, extra_run=""):
+    pos = chain_layout()
     atoms = "\n".join(
         f"create_atoms 1 single {px} {py} 0\nset atom {k + 1} diameter {2 * rad} density {scenes.RHO}\n"
         f"set atom {k + 1} vx {vx} vy {0.01 * (k - 3)}"

@@ -9,9 +9,11 @@ import pytest
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools"))
 sys.path.insert(0, str(ROOT / "tests" / "lammps"))
+sys.path.insert(0, str(ROOT / "tests"))
 
 import lammps_run  # noqa: E402
 import liggghts_run  # noqa: E402
+from scratch_support import pytest_runtest_makereport, scratch_directory  # noqa: E402,F401
 
 SCRATCH = ROOT / "build" / "test-scratch-liggghts"
 
@@ -31,20 +33,7 @@ def clean_scratch():
 
 @pytest.fixture
 def scratch(request):
-    path = SCRATCH / request.node.name.replace("[", "_").replace("]", "").replace("/", "_")
-    shutil.rmtree(path, ignore_errors=True)
-    path.mkdir(parents=True)
-    yield path
-    if not getattr(request.node, "failed", False):
-        shutil.rmtree(path, ignore_errors=True)
-
-
-@pytest.hookimpl(hookwrapper=True)
-def pytest_runtest_makereport(item, call):
-    outcome = yield
-    report = outcome.get_result()
-    if report.when == "call" and report.failed:
-        item.failed = True
+    yield from scratch_directory(request, SCRATCH)
 
 
 class Runner:

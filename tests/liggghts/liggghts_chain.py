@@ -3,20 +3,17 @@ spheres of two sizes along x between two walls, alternately moving towards each 
 that collisions and films straddle x = 0, the boundary between the ranks of a 2 x 1 x 1 grid."""
 import scenes
 from liggghts_scenes import HEADER
+from scene_chain import chain_layout
 
 R = scenes.R
 
 
 def chain_atoms():
-    lines, x = [], -6.68 * R
-    for k in range(8):
-        radius = R if k % 2 == 0 else 0.6 * R
-        x += radius
-        lines.append(f"create_atoms 1 single {x} {0.05 * R * (k % 3)} 0 units box\n"
-                     f"set atom {k + 1} diameter {2 * radius} density {scenes.RHO}\n"
-                     f"set atom {k + 1} vx {0.1 if k % 2 == 0 else -0.1} vy {0.01 * (k - 3)}")
-        x += radius + 0.07 * R
-    return "\n".join(lines)
+    return "\n".join(
+        f"create_atoms 1 single {x} {y} 0 units box\n"
+        f"set atom {k + 1} diameter {2 * radius} density {scenes.RHO}\n"
+        f"set atom {k + 1} vx {vx} vy {0.01 * (k - 3)}"
+        for k, (x, y, radius, vx) in enumerate(chain_layout()))
 
 
 def setup(tangential="history"):
