@@ -38,6 +38,7 @@ struct ContactStep {
   double exit_guess[table_size + 1];     // exit time s against x = r / (1 + r), r = g1 / -g0
   double entry_guess[table_size + 1];    // entry time s against x = r / (1 + r), r = -g1 / g0
   double dt = 0.0;
+  double inv_dt = 0.0;        // 1 / dt (engines multiply: no division per pair)
   double decay_rate = 0.0;    // a      [1/time]
   double omega = 0.0;         // omega  [1/time]
   double E = 1.0, C = 1.0, S = 0.0;
@@ -88,6 +89,7 @@ inline ContactStep make_contact_step(const SpringDashpot &sd, double dt)
 {
   ContactStep cs;
   cs.dt = dt;
+  cs.inv_dt = 1.0 / dt;
   // Same e_d = exp(-a t_c) with t_c = pi / omega, at no less than 1.5 steps per contact.
   const double t_c = std::max(contact_duration_of(sd), min_steps_per_contact * dt);
   cs.omega = pi / t_c;

@@ -81,6 +81,14 @@ inline double lambda_integral_of(Partner partner, double eps)
   return expansion_of(partner).integral(eps);
 }
 
+// The radius R of the film force and its inverse (one division per pair, not two).
+struct FilmRadius {
+  double value = 0.0, inverse = 0.0;
+  FilmRadius() = default;
+  explicit FilmRadius(double radius) : value(radius), inverse(1.0 / radius) {}
+  FilmRadius(double radius, double inverse_radius) : value(radius), inverse(inverse_radius) {}
+};
+
 // Per-type-pair lubrication constants. eps_activation <= 0 marks a dry pair.
 struct Lubrication {
   Partner partner = Partner::particle;
@@ -93,6 +101,7 @@ struct Lubrication {
   double lambda_activation = 0.0;  // lambda(eps_al) when eps_al is fixed
   double integral_activation = 0.0;    // antiderivative of lambda at eps_al (fixed eps_al)
   double lambda_saturated = 0.0;       // lambda(eps_1)
+  double integral_saturated = 0.0;     // antiderivative of lambda at eps_1
 
   bool active() const { return six_pi_mu > 0.0; }
 
@@ -109,11 +118,10 @@ struct Lubrication {
   double film_integral(double eps, double eps_al, double lambda_al, double integral_al) const
   {
     if (eps >= eps_al) return 0.0;
-    const double e = std::max(eps, eps_saturation);
-    double p = integral_al - expansion.integral(e) - lambda_al * (eps_al - e);
-    if (eps < eps_saturation)
-      p += (lambda_saturated - lambda_al) * (eps_saturation - std::max(eps, eps_release));
-    return p;
+    if (eps >= eps_saturation) return integral_al - expansion.integral(eps) - lambda_al * (eps_al - eps);
+    // Saturated (no logarithm: L(eps_1) is kept per type pair).
+    return integral_al - integral_saturated - lambda_al * (eps_al - eps_saturation) +
+        (lambda_saturated - lambda_al) * (eps_saturation - std::max(eps, eps_release));
   }
 
   double film_integral(double eps, double radius) const
@@ -126,20 +134,31 @@ struct Lubrication {
 
   // Momentum the film transfers to the pair (along n) while the gap goes from gap_before to
   // gap_after: the path integral of c_l, independent of how the path is split into steps.
-  double impulse(double gap_before, double gap_after, double radius) const
+  double impulse(double gap_before, double gap_after, const FilmRadius &radius) const
   {
-    const double inv_radius = 1.0 / radius;
-    const double before = gap_before * inv_radius, after = gap_after * inv_radius;
-    const double eps_al = activation_for(radius);
+    const double before = gap_before * radius.inverse, after = gap_after * radius.inverse;
+    const double eps_al = grid_spacing > 0.0 ? 0.75 * grid_spacing * radius.inverse : eps_activation;
     if (before >= eps_al && after >= eps_al) return 0.0;
     double lambda_al = lambda_activation, integral_al = integral_activation;
     if (grid_spacing > 0.0) {
       lambda_al = expansion.lambda(eps_al);
       integral_al = expansion.integral(eps_al);
     }
-    return six_pi_mu * radius * radius *
+    return six_pi_mu * radius.value * radius.value *
         (film_integral(after, eps_al, lambda_al, integral_al) -
          film_integral(before, eps_al, lambda_al, integral_al));
+  }
+
+  double impulse(double gap_before, double gap_after, double radius) const
+  {
+    return impulse(gap_before, gap_after, FilmRadius(radius));
+  }
+
+  // Largest gap (length) at which the film acts for a contact of lubrication radius R.
+  double reach(double radius) const
+  {
+    if (!active()) return 0.0;
+    return grid_spacing > 0.0 ? 0.75 * grid_spacing : eps_activation * radius;
   }
 
   // Damping coefficient c_l >= 0 such that F_l = -c_l u_n, for normalised gap eps.
@@ -171,6 +190,7 @@ inline Lubrication make_lubrication(Partner partner, double mu_f, double eps_act
     lub.integral_activation = lambda_integral_of(partner, eps_activation);
   }
   lub.lambda_saturated = lambda_of(partner, eps_saturation);
+  lub.integral_saturated = lambda_integral_of(partner, eps_saturation);
   return lub;
 }
 
@@ -178,6 +198,14 @@ inline Lubrication make_lubrication(Partner partner, double mu_f, double eps_act
 inline double lubrication_radius_pair(double radius_i, double radius_j)
 {
   return 2.0 * radius_i * radius_j / (radius_i + radius_j);
+}
+
+// The same with its inverse (R_i + R_j) / (2 R_i R_j), from a single division.
+inline FilmRadius film_radius_pair(double radius_i, double radius_j)
+{
+  const double sum = radius_i + radius_j, twice_product = 2.0 * radius_i * radius_j;
+  const double q = 1.0 / (sum * twice_product);
+  return FilmRadius(twice_product * twice_product * q, sum * sum * q);
 }
 
 }    // namespace lubricated

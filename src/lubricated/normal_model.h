@@ -36,10 +36,7 @@ struct NormalModel {
   }
 
   // Largest gap (length) at which the model acts, for a contact of lubrication radius R.
-  double reach(double radius) const
-  {
-    return lubrication.active() ? lubrication.activation_for(radius) * radius : 0.0;
-  }
+  double reach(double radius) const { return lubrication.reach(radius); }
 };
 
 inline NormalModel make_normal_model(const Coefficients &c, Partner partner, double dt)
@@ -61,8 +58,11 @@ struct NormalForce {
 };
 
 // at_start: the first force evaluation of a run (velocities are full-step there).
-__attribute__((always_inline)) inline NormalForce normal_force(const NormalModel &m, double gap, double radius,
-                                double reduced_mass, double u_n, bool at_start = false)
+// radius: the film's R (lubrication.h) with its inverse.
+__attribute__((always_inline)) inline NormalForce normal_force(const NormalModel &m, double gap,
+                                                              const FilmRadius &radius,
+                                                              double reduced_mass, double u_n,
+                                                              bool at_start = false)
 {
   NormalForce f;
   if (gap < 0.0) {
@@ -75,8 +75,9 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
     const ContactStep &cs = m.step;
     const double g0 = gap - u_n * cs.dt;
     const double g2 = 2.0 * cs.E * cs.C * gap - cs.E * cs.E * g0;
-    if (!at_start && gap < 0.0 && g0 < 0.0 && g2 < 0.0)    // sustained contact, inline
-      f.contact = reduced_mass * (g2 - 2.0 * gap + g0) / (cs.dt * cs.dt);
+    if (!at_start && gap < 0.0 && g0 < 0.0 && g2 < 0.0)    // sustained contact, inline:
+      // (g2 - 2 gap + g0) / dt^2 of the recurrence, as a spring-dashpot (contact_step.h)
+      f.contact = -reduced_mass * (cs.stiffness_step * gap + cs.damping_step * u_n);
     else
       f.contact = reduced_mass *
           (at_start ? contact_acceleration_at_start(cs, gap, u_n) : contact_acceleration(cs, gap, u_n));
@@ -89,14 +90,20 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
       // steps it telescopes to the exact impulse of the continuous model, whatever dt.
       // It may stop the relative motion but never reverse it: |impulse| <= m_e |u_n|.
       const double impulse = m.lubrication.impulse(gap - u_n * dt, gap, radius);
-      f.lubrication = std::max(-limit, std::min(limit, impulse)) / dt;
+      f.lubrication = std::max(-limit, std::min(limit, impulse)) * m.step.inv_dt;
     } else {
-      f.lubrication = -m.lubrication.damping(gap / radius, radius) * u_n;
+      f.lubrication = -m.lubrication.damping(gap * radius.inverse, radius.value) * u_n;
       // At a run start only half a kick follows: it may stop the motion, not reverse it.
       if (m.exact) f.lubrication = std::max(-2.0 * limit / dt, std::min(2.0 * limit / dt, f.lubrication));
     }
   }
   return f;
+}
+
+inline NormalForce normal_force(const NormalModel &m, double gap, double radius,
+                                double reduced_mass, double u_n, bool at_start = false)
+{
+  return normal_force(m, gap, FilmRadius(radius), reduced_mass, u_n, at_start);
 }
 
 inline double reduced_mass(double m_i, double m_j)

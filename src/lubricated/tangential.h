@@ -100,11 +100,18 @@ inline Vec3 tangential_contact_force(const TangentialModel &m, Vec3 &delta, cons
                                      const Vec3 &s, double tangential_mass, double normal_force,
                                      double first_fraction = 1.0)
 {
-  // Keep the elongation in the tangent plane, with its length (the pair may have rotated).
-  const double before = std::sqrt(dot(delta, delta));
-  delta = tangential_part(delta, n);
-  const double after = std::sqrt(dot(delta, delta));
-  if (after > 0.0) delta = scaled(delta, before / after);
+  // Keep the elongation in the tangent plane, with its length (the pair may have rotated):
+  // remove the normal part r and rescale by sqrt(1 / (1 - x)), x = r^2 / |delta|^2; for the
+  // small x of one step's rotation the series 1 + x/2 + 3x^2/8 (error 5x^3/16 < 1e-13) saves
+  // two square roots per contact and step.
+  const double normal_part = dot(delta, n);
+  if (normal_part != 0.0) {
+    const double length_sq = dot(delta, delta);
+    delta = minus(delta, scaled(n, normal_part));
+    const double x = normal_part * normal_part / length_sq;
+    if (x < 1e-4) delta = scaled(delta, 1.0 + x * (0.5 + 0.375 * x));
+    else if (x < 1.0) delta = scaled(delta, std::sqrt(1.0 / (1.0 - x)));
+  }
   delta = plus(delta, scaled(s, first_fraction * m.dt));
 
   Vec3 f = scaled(plus(scaled(delta, m.stiffness_step), scaled(s, m.damping_step)), -tangential_mass);

@@ -282,6 +282,8 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
       }
     };
 
+    // Sums on i kept in registers (f[i] may alias f[j] for the compiler).
+    double fxi = 0.0, fyi = 0.0, fzi = 0.0, txi = 0.0, tyi = 0.0, tzi = 0.0;
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double delx = xi - x[j][0];
@@ -304,10 +306,11 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
       const double dvy = vi[1] - vj[1];
       const double dvz = vi[2] - vj[2];
 
-      double lub_radius = 0.0, reach = 0.0;
+      lub::FilmRadius film;
+      double reach = 0.0;
       if (WET && model.lubrication.active()) {
-        lub_radius = lub::lubrication_radius_pair(radi, radius[j]);
-        reach = model.reach(lub_radius);
+        film = lub::film_radius_pair(radi, radius[j]);
+        reach = model.reach(film.value);
       }
       const double outer = radsum + reach;
       if (rsq >= outer * outer) {
@@ -329,23 +332,23 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
       const double u_n = (dvx * delx + dvy * dely + dvz * delz) * rinv;
       const double m_e = lub::reduced_mass(rmass[i], rmass[j]);
       const lub::NormalForce fn =
-          lub::normal_force(model, r - radsum, lub_radius, m_e, u_n, at_start);
+          lub::normal_force(model, r - radsum, film, m_e, u_n, at_start);
 
       const double fpair = fn.total() * rinv;
       double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
       if (TANGENTIAL) {
         double ft[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0}, tj[3] = {0.0, 0.0, 0.0};
         const double del[3] = {delx, dely, delz};
-        tangential(i, j, jj, del, rinv, r - radsum, u_n, lub_radius, m_e, fn.contact, ft, ti, tj);
+        tangential(i, j, jj, del, rinv, r - radsum, u_n, film.value, m_e, fn.contact, ft, ti, tj);
         fx += ft[0], fy += ft[1], fz += ft[2];
         double **torque = atom->torque;
-        for (int d = 0; d < 3; d++) torque[i][d] += ti[d];
+        txi += ti[0], tyi += ti[1], tzi += ti[2];
         if (newton_pair || j < nlocal)
           for (int d = 0; d < 3; d++) torque[j][d] += tj[d];
       }
-      f[i][0] += fx;
-      f[i][1] += fy;
-      f[i][2] += fz;
+      fxi += fx;
+      fyi += fy;
+      fzi += fz;
       if (newton_pair || j < nlocal) {
         f[j][0] -= fx;
         f[j][1] -= fy;
@@ -357,6 +360,15 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
         else
           ev_tally(i, j, nlocal, newton_pair, fn.energy, 0.0, fpair, delx, dely, delz);
       }
+    }
+    f[i][0] += fxi;
+    f[i][1] += fyi;
+    f[i][2] += fzi;
+    if (TANGENTIAL) {
+      double **torque = atom->torque;
+      torque[i][0] += txi;
+      torque[i][1] += tyi;
+      torque[i][2] += tzi;
     }
   }
 }
