@@ -234,6 +234,61 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
+// Tangential force ft on i (on j: -ft) and the torques ti, tj of one pair (tangential.h);
+// dv = v_i - v_j as used for u_n.
+inline void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const double *del,
+                                                    const double *dv_ij, double rinv, double gap,
+                                                    double u_n, double lub_radius, double m_e,
+                                                    double normal_force, double *ft, double *ti,
+                                                    double *tj)
+{
+  const lub::TangentialModel &tm = tmodels[index(atom->type[i], atom->type[j])];
+  const double radi = atom->radius[i], radj = atom->radius[j];
+  double **omega = atom->omega;
+  const lub::Vec3 n{del[0] * rinv, del[1] * rinv, del[2] * rinv};
+  const lub::Vec3 dv{dv_ij[0], dv_ij[1], dv_ij[2]};
+  const lub::Vec3 wi{omega[i][0], omega[i][1], omega[i][2]};
+  const lub::Vec3 wj{omega[j][0], omega[j][1], omega[j][2]};
+  const lub::Vec3 s =
+      lub::tangential_part(lub::minus(dv, lub::cross(lub::plus(lub::scaled(wi, radi),
+                                                               lub::scaled(wj, radj)), n)), n);
+  const double m_t = lub::tangential_mass_ratio * m_e;
+
+  lub::Vec3 f;
+  if (history) {
+    char &touched = history->touched(i)[jj];
+    double *h = history->values(i) + 3 * jj;
+    if (tm.contact_active() && lub::tangential_in_contact(gap)) {
+      const double fraction = touched ? 1.0 : lub::first_contact_fraction(gap, u_n, tm.dt);
+      lub::Vec3 delta{h[0], h[1], h[2]};
+      f = lub::tangential_contact_force(tm, delta, n, s, m_t, normal_force, fraction);
+      h[0] = delta.x, h[1] = delta.y, h[2] = delta.z;
+      touched = 1;
+    } else if (touched) {
+      touched = 0;
+      h[0] = h[1] = h[2] = 0.0;
+    }
+  }
+  if (tm.film_active()) {
+    const lub::Lubrication &film = models[index(atom->type[i], atom->type[j])].lubrication;
+    const double eps = gap / lub_radius;
+    f = lub::plus(f, lub::shear_film_force(tm, s, eps, film.activation_for(lub_radius),
+                                           film.eps_saturation, film.eps_release,
+                                           radi * radj / (radi + radj), m_t));
+  }
+  lub::Vec3 roll;
+  if (tm.rolling_active() && gap < 0.0) {
+    const double inertia_i = 0.4 * atom->rmass[i] * radi * radi;
+    const double inertia_j = 0.4 * atom->rmass[j] * radj * radj;
+    roll = lub::rolling_torque(tm, n, lub::minus(wi, wj), radi * radj / (radi + radj),
+                               inertia_i * inertia_j / (inertia_i + inertia_j), normal_force);
+  }
+  const lub::Vec3 nxf = lub::cross(n, f);
+  ft[0] = f.x, ft[1] = f.y, ft[2] = f.z;
+  ti[0] = -radi * nxf.x + roll.x, ti[1] = -radi * nxf.y + roll.y, ti[2] = -radi * nxf.z + roll.z;
+  tj[0] = -radj * nxf.x - roll.x, tj[1] = -radj * nxf.y - roll.y, tj[2] = -radj * nxf.z - roll.z;
+}
+
 template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
 {
   double **x = atom->x;
@@ -338,8 +393,10 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
       double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
       if (TANGENTIAL) {
         double ft[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0}, tj[3] = {0.0, 0.0, 0.0};
+        // The slip uses the engine's velocities (under the midpoint integrator: V~).
         const double del[3] = {delx, dely, delz};
-        tangential(i, j, jj, del, rinv, r - radsum, u_n, film.value, m_e, fn.contact, ft, ti, tj);
+        const double dv[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+        tangential(i, j, jj, del, dv, rinv, r - radsum, u_n, film.value, m_e, fn.contact, ft, ti, tj);
         fx += ft[0], fy += ft[1], fz += ft[2];
         double **torque = atom->torque;
         txi += ti[0], tyi += ti[1], tzi += ti[2];
@@ -371,59 +428,6 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
       torque[i][2] += tzi;
     }
   }
-}
-
-// Tangential force ft on i (on j: -ft) and the torques ti, tj of one pair (tangential.h).
-void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const double *del, double rinv,
-                                             double gap, double u_n, double lub_radius, double m_e,
-                                             double normal_force, double *ft, double *ti, double *tj)
-{
-  const lub::TangentialModel &tm = tmodels[index(atom->type[i], atom->type[j])];
-  const double radi = atom->radius[i], radj = atom->radius[j];
-  double **v = atom->v, **omega = atom->omega;
-  const lub::Vec3 n{del[0] * rinv, del[1] * rinv, del[2] * rinv};
-  const lub::Vec3 dv{v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
-  const lub::Vec3 wi{omega[i][0], omega[i][1], omega[i][2]};
-  const lub::Vec3 wj{omega[j][0], omega[j][1], omega[j][2]};
-  const lub::Vec3 s =
-      lub::tangential_part(lub::minus(dv, lub::cross(lub::plus(lub::scaled(wi, radi),
-                                                               lub::scaled(wj, radj)), n)), n);
-  const double m_t = lub::tangential_mass_ratio * m_e;
-  const double reduced_radius = radi * radj / (radi + radj);
-
-  lub::Vec3 f;
-  if (history) {
-    char &touched = history->touched(i)[jj];
-    double *h = history->values(i) + 3 * jj;
-    if (tm.contact_active() && lub::tangential_in_contact(gap)) {
-      const double fraction = touched ? 1.0 : lub::first_contact_fraction(gap, u_n, tm.dt);
-      lub::Vec3 delta{h[0], h[1], h[2]};
-      f = lub::tangential_contact_force(tm, delta, n, s, m_t, normal_force, fraction);
-      h[0] = delta.x, h[1] = delta.y, h[2] = delta.z;
-      touched = 1;
-    } else if (touched) {
-      touched = 0;
-      h[0] = h[1] = h[2] = 0.0;
-    }
-  }
-  if (tm.film_active()) {
-    const lub::Lubrication &film = models[index(atom->type[i], atom->type[j])].lubrication;
-    const double eps = gap / lub_radius;
-    f = lub::plus(f, lub::shear_film_force(tm, s, eps, film.activation_for(lub_radius),
-                                           film.eps_saturation, film.eps_release,
-                                           reduced_radius, m_t));
-  }
-  lub::Vec3 roll;
-  if (tm.rolling_active() && gap < 0.0) {
-    const double inertia_i = 0.4 * atom->rmass[i] * radi * radi;
-    const double inertia_j = 0.4 * atom->rmass[j] * radj * radj;
-    roll = lub::rolling_torque(tm, n, lub::minus(wi, wj), reduced_radius,
-                               inertia_i * inertia_j / (inertia_i + inertia_j), normal_force);
-  }
-  const lub::Vec3 nxf = lub::cross(n, f);
-  ft[0] = f.x, ft[1] = f.y, ft[2] = f.z;
-  ti[0] = -radi * nxf.x + roll.x, ti[1] = -radi * nxf.y + roll.y, ti[2] = -radi * nxf.z + roll.z;
-  tj[0] = -radj * nxf.x - roll.x, tj[1] = -radj * nxf.y - roll.y, tj[2] = -radj * nxf.z - roll.z;
 }
 
 double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, double rsq,

@@ -52,9 +52,12 @@ class PairLubricatedSpringDashpot : public Pair {
   int index(int itype, int jtype) const { return itype * (ntypes_alloc + 1) + jtype; }
   void update_models();
   template <bool WET, bool TANGENTIAL> void eval();
-  void tangential(int i, int j, int jj, const double *del, double rinv, double gap, double u_n,
-                  double lub_radius, double m_e, double normal_force, double *ft, double *ti,
-                  double *tj);
+  // One contact's tangential force and torques (inlined into eval's loop).
+  __attribute__((always_inline)) inline void tangential(int i, int j, int jj, const double *del,
+                                                        const double *dv, double rinv, double gap,
+                                                        double u_n, double lub_radius, double m_e,
+                                                        double normal_force, double *ft,
+                                                        double *ti, double *tj);
 };
 
 }    // namespace LAMMPS_NS
