@@ -86,6 +86,10 @@ TEST(LubricationRadius, EqualSpheresGiveThePapersRadius)
   // Leading term 6 pi mu R^2 u / (2 h) scales with the reduced radius squared.
   const double R1 = 1.0, R2 = 3.0, reduced = R1 * R2 / (R1 + R2);
   EXPECT_DOUBLE_EQ(lubrication_radius_pair(R1, R2), 2.0 * reduced);
+  // The pair loop's form: the same radius and its inverse from one division.
+  const FilmRadius film = film_radius_pair(R1, R2);
+  EXPECT_DOUBLE_EQ(film.value, 2.0 * reduced);
+  EXPECT_DOUBLE_EQ(film.inverse, 1.0 / (2.0 * reduced));
 }
 
 TEST(Dry, ZeroViscosityRunsNoLubrication)

@@ -65,6 +65,11 @@ TEST(Tangential, ElongationIsRotatedIntoTheTangentPlaneKeepingItsLength)
   tangential_contact_force(m, delta, n, Vec3{}, 1.0, 1.0);
   EXPECT_NEAR(delta.z, 0.0, 1e-15);
   EXPECT_NEAR(delta.x, std::sqrt(1.25), 1e-14);
+  // A small rotation (one step's, where the series replaces the square roots): the same.
+  Vec3 small{1.0, 0.0, 3e-3};
+  tangential_contact_force(m, small, n, Vec3{}, 1.0, 1.0);
+  EXPECT_NEAR(small.z, 0.0, 1e-15);
+  EXPECT_NEAR(small.x, std::sqrt(1.0 + 9e-6), 1e-15);
 }
 
 TEST(Tangential, ShearFilmNeverReversesTheSlipAndVanishesOutsideTheFilm)
