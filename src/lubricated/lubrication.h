@@ -30,16 +30,14 @@ enum class Partner { particle, wall };
 struct Expansion {
   double c_inv, c_log, c_elog, c_0;
 
-  double lambda(double eps) const
+  // l = ln(eps), when the caller has it already.
+  double lambda(double eps, double l) const { return c_inv / eps + c_log * l + c_elog * eps * l + c_0; }
+  double integral(double eps, double l) const
   {
-    const double l = std::log(eps);
-    return c_inv / eps + c_log * l + c_elog * eps * l + c_0;
-  }
-  double integral(double eps) const
-  {
-    const double l = std::log(eps);
     return c_inv * l + c_log * (eps * l - eps) + c_elog * eps * eps * (0.5 * l - 0.25) + c_0 * eps;
   }
+  double lambda(double eps) const { return lambda(eps, std::log(eps)); }
+  double integral(double eps) const { return integral(eps, std::log(eps)); }
 };
 
 constexpr Expansion particle_particle_expansion{0.5, -0.45, -3.0 / 56.0, 1.346};
@@ -140,9 +138,14 @@ struct Lubrication {
     const double eps_al = grid_spacing > 0.0 ? 0.75 * grid_spacing * radius.inverse : eps_activation;
     if (before >= eps_al && after >= eps_al) return 0.0;
     double lambda_al = lambda_activation, integral_al = integral_activation;
-    if (grid_spacing > 0.0) {
-      lambda_al = expansion.lambda(eps_al);
-      integral_al = expansion.integral(eps_al);
+    if (grid_spacing > 0.0) {    // eps_al per contact (Breugem's rule)
+      const double l = std::log(eps_al);
+      lambda_al = expansion.lambda(eps_al, l);
+      // Saturated at both ends (contacts): the difference needs no antiderivative.
+      if (before < eps_saturation && after < eps_saturation)
+        return six_pi_mu * radius.value * radius.value * (lambda_saturated - lambda_al) *
+            (std::max(before, eps_release) - std::max(after, eps_release));
+      integral_al = expansion.integral(eps_al, l);
     }
     return six_pi_mu * radius.value * radius.value *
         (film_integral(after, eps_al, lambda_al, integral_al) -

@@ -136,6 +136,22 @@ TEST_P(Film, ImpulseOfAPassTelescopesWhateverTheSteps)
   EXPECT_LT(lub.impulse(end, start, R), 0.0);    // separating: held back
 }
 
+TEST_P(Film, GridSpacingGivesTheSameImpulseAsItsActivationGap)
+{
+  // dx with 0.75 dx / R = 0.1: the per-contact path (and its saturated shortcut) must agree
+  // with the per-type-pair constants of activation 0.1, in every zone.
+  const double R = 1e-3;
+  const Lubrication fixed = make_lubrication(GetParam(), 1e-3, 0.1, 0.0, 1e-3, -1e-2);
+  const Lubrication grid = make_lubrication(GetParam(), 1e-3, 0.0, 0.1 * R / 0.75, 1e-3, -1e-2);
+  const double gaps[][2] = {{0.15, 0.05}, {0.05, 0.004}, {0.004, 5e-4}, {5e-4, -3e-3},
+                            {-3e-3, -2e-2}, {-2e-2, 5e-4}, {8e-4, 2e-4}};
+  for (const auto &g : gaps) {
+    const double expected = fixed.impulse(g[0] * R, g[1] * R, R);
+    EXPECT_NEAR(grid.impulse(g[0] * R, g[1] * R, R), expected, 1e-12 * std::fabs(expected) + 1e-30)
+        << g[0] << " -> " << g[1];
+  }
+}
+
 TEST(FilmImpulse, NeverReversesTheRelativeMotion)
 {
   Coefficients c;
