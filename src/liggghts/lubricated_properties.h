@@ -145,7 +145,8 @@ inline double reach_fraction(const std::vector<Coefficients> &table, int ntypes,
       double fraction = wall ? c.eps_activation : 0.5 * c.eps_activation;
       if (c.grid_spacing > 0.0) {    // reach 0.75 dx whatever the radii
         if (!(r_min > 0.0)) return -1.0;
-        fraction = 0.75 * c.grid_spacing / (wall ? r_min : 2.0 * r_min);
+        fraction = lubricated::Lubrication::grid_activation * c.grid_spacing /
+            (wall ? r_min : 2.0 * r_min);
       }
       reach = std::max(reach, fraction);
     }

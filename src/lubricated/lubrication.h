@@ -103,10 +103,17 @@ struct Lubrication {
 
   bool active() const { return six_pi_mu > 0.0; }
 
+  // Breugem's rule with a grid: the film starts at a gap of 0.75 dx (MODEL.md section 1).
+  static constexpr double grid_activation = 0.75;
+
   // Activation distance in units of R for a contact of lubrication radius R.
+  double activation_for(const FilmRadius &radius) const
+  {
+    return grid_spacing > 0.0 ? grid_activation * grid_spacing * radius.inverse : eps_activation;
+  }
   double activation_for(double radius) const
   {
-    return grid_spacing > 0.0 ? 0.75 * grid_spacing / radius : eps_activation;
+    return grid_spacing > 0.0 ? grid_activation * grid_spacing / radius : eps_activation;
   }
 
   // Film integral P(eps) = int_eps^inf [c_l(s) / (6 pi mu R)] ds over the zones above:
@@ -135,16 +142,12 @@ struct Lubrication {
   double impulse(double gap_before, double gap_after, const FilmRadius &radius) const
   {
     const double before = gap_before * radius.inverse, after = gap_after * radius.inverse;
-    const double eps_al = grid_spacing > 0.0 ? 0.75 * grid_spacing * radius.inverse : eps_activation;
+    const double eps_al = activation_for(radius);
     if (before >= eps_al && after >= eps_al) return 0.0;
     double lambda_al = lambda_activation, integral_al = integral_activation;
-    if (grid_spacing > 0.0) {    // eps_al per contact (Breugem's rule)
+    if (grid_spacing > 0.0) {    // eps_al per contact: one logarithm for both
       const double l = std::log(eps_al);
       lambda_al = expansion.lambda(eps_al, l);
-      // Saturated at both ends (contacts): the difference needs no antiderivative.
-      if (before < eps_saturation && after < eps_saturation)
-        return six_pi_mu * radius.value * radius.value * (lambda_saturated - lambda_al) *
-            (std::max(before, eps_release) - std::max(after, eps_release));
       integral_al = expansion.integral(eps_al, l);
     }
     return six_pi_mu * radius.value * radius.value *
@@ -161,7 +164,7 @@ struct Lubrication {
   double reach(double radius) const
   {
     if (!active()) return 0.0;
-    return grid_spacing > 0.0 ? 0.75 * grid_spacing : eps_activation * radius;
+    return grid_spacing > 0.0 ? grid_activation * grid_spacing : eps_activation * radius;
   }
 
   // Damping coefficient c_l >= 0 such that F_l = -c_l u_n, for normalised gap eps.

@@ -393,9 +393,12 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
       double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
       if (TANGENTIAL) {
         double ft[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0}, tj[3] = {0.0, 0.0, 0.0};
-        // The slip uses the engine's velocities (under the midpoint integrator: V~).
+        // The slip uses the engine's velocities (under the midpoint integrator: V~, not the
+        // step velocity of the normal contact).
         const double del[3] = {delx, dely, delz};
-        const double dv[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+        double dv[3] = {dvx, dvy, dvz};
+        if (vi != v[i])
+          for (int d = 0; d < 3; d++) dv[d] = v[i][d] - v[j][d];
         tangential(i, j, jj, del, dv, rinv, r - radsum, u_n, film.value, m_e, fn.contact, ft, ti, tj);
         fx += ft[0], fy += ft[1], fz += ft[2];
         double **torque = atom->torque;
