@@ -3,7 +3,7 @@
 The LAMMPS plugin's fix wall/lubrication and pair_coeff keywords map onto LIGGGHTS
 properties (src/liggghts/lubricated_properties.h): e_d -> coefficientRestitution (type 2 is
 the wall), ncontact -> lubricatedContactSteps, viscosity -> lubricatedViscosity,
-activation -> lubricatedActivation.
+activation -> lubricatedActivation, legendre -> lubricatedLegendre.
 """
 from scenes import EPS_AL, R, RHO, U, WET_DT, pair_bounce_layout, wall_bounce_steps
 
@@ -15,7 +15,7 @@ units si
 """
 
 
-def properties(e_dry, mu, ncontact, e_wall=None, friction=None):
+def properties(e_dry, mu, ncontact, e_wall=None, friction=None, legendre=0.0):
     e_wall = e_dry if e_wall is None else e_wall
     text = (f"fix m1 all property/global coefficientRestitution peratomtypepair 2 "
             f"{e_dry} {e_wall} {e_wall} {e_wall}\n"
@@ -23,12 +23,15 @@ def properties(e_dry, mu, ncontact, e_wall=None, friction=None):
     if mu > 0:
         text += (f"fix m3 all property/global lubricatedViscosity scalar {mu}\n"
                  f"fix m4 all property/global lubricatedActivation scalar {EPS_AL}\n")
+    if legendre:
+        text += f"fix m6 all property/global lubricatedLegendre scalar {legendre}\n"
     if friction is not None:
         text += f"fix m5 all property/global coefficientFriction peratomtypepair 2 {' '.join([str(friction)] * 4)}\n"
     return text
 
 
-def wall_bounce(e_dry, dt_ru=WET_DT, mu=0.0, ncontact=8, gap0=0.2137, model="model lubricated"):
+def wall_bounce(e_dry, dt_ru=WET_DT, mu=0.0, ncontact=8, gap0=0.2137, model="model lubricated",
+                legendre=0.0):
     """scenes.wall_bounce in LIGGGHTS: prints RESULT e and RESULT contact_steps."""
     dt = dt_ru * R / U
     steps = wall_bounce_steps(dt_ru, gap0, ncontact)
@@ -37,7 +40,7 @@ region box block -0.01 0.01 -0.01 0.01 0 0.02 units box
 create_box 2 box
 neighbor {0.5 * R} bin
 neigh_modify delay 0
-{properties(e_dry, mu, ncontact)}
+{properties(e_dry, mu, ncontact, legendre=legendre)}
 pair_style gran {model}
 pair_coeff * *
 fix wall all wall/gran {model} primitive type 2 zplane 0.0
@@ -59,7 +62,7 @@ print "RESULT contact_steps ${{n}}"
 
 
 def pair_bounce(e_dry, mass_ratio=1.0, dt_ru=WET_DT, mu=0.0, ncontact=8, gap0=0.2137,
-                radius_ratio=1.0, x_offset=0.0, skin=0.5 * R, model="model lubricated"):
+                radius_ratio=1.0, x_offset=0.0, skin=0.5 * R, model="model lubricated", legendre=0.0):
     """scenes.pair_bounce in LIGGGHTS: two spheres head-on along x, centre-of-mass frame."""
     dt = dt_ru * R / U
     r2, rho2, x1, x2, v1, v2, half, steps = pair_bounce_layout(
@@ -69,7 +72,7 @@ region box block -{half} {half} -{half} {half} -{half} {half} units box
 create_box 2 box
 neighbor {skin} bin
 neigh_modify delay 0
-{properties(e_dry, mu, ncontact)}
+{properties(e_dry, mu, ncontact, legendre=legendre)}
 pair_style gran {model}
 pair_coeff * *
 create_atoms 1 single {x1} 0 0 units box

@@ -11,7 +11,8 @@ def write_csv(path, rows):
         writer.writerows(rows)
 
 
-def plot(path, rows, label, marker="o", color="tab:orange"):
+def plot(path, rows, label, marker="o", color="tab:orange", extra=None):
+    """extra: optional (column, label, marker, color) of a second series from the same rows."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -21,6 +22,10 @@ def plot(path, rows, label, marker="o", color="tab:orange"):
                 label="Legendre et al. (2005): exp(-35/St)")
     ax.semilogx([r["St"] for r in rows], [r["e_over_ed"] for r in rows], marker, color=color,
                 label=label)
+    if extra:
+        column, extra_label, extra_marker, extra_color = extra
+        ax.semilogx([r["St"] for r in rows], [r[column] for r in rows], extra_marker,
+                    color=extra_color, label=extra_label)
     ax.set_xlabel("Stokes number St = (2/9) rho_p R U / mu_f")
     ax.set_ylabel("e / e_d")
     ax.set_ylim(-0.05, 1.05)

@@ -7,7 +7,8 @@
 //   lubricatedActivation     scalar           eps_al, film activation gap / R
 //   lubricatedGridSpacing    scalar           dx: eps_al = 0.75 dx / R (instead of eps_al)
 //   lubricatedSaturation     scalar           eps_1 (default 1e-3)
-//   lubricatedRelease        scalar           eps_2 (default -1e-2)
+//   lubricatedRelease        scalar           eps_2 (default -1e-2; 0 with lubricatedLegendre)
+//   lubricatedLegendre       scalar           A: contact calibrated to e / e_d = exp(-A / St)
 //
 // The values go through the kernel's Coefficients and validate(), the same ranges and
 // messages as pair_coeff in the LAMMPS plugin, with each keyword named by its property.
@@ -41,7 +42,8 @@ constexpr PropertyName property_names[] = {
     {"ncontact", "lubricatedContactSteps"}, {"tcontact", "lubricatedContactTime"},
     {"viscosity", "lubricatedViscosity"},   {"activation", "lubricatedActivation"},
     {"grid", "lubricatedGridSpacing"},      {"saturation", "lubricatedSaturation"},
-    {"release", "lubricatedRelease"},       {"e_d", "coefficientRestitution"}};
+    {"release", "lubricatedRelease"},       {"legendre", "lubricatedLegendre"},
+    {"e_d", "coefficientRestitution"}};
 
 // A kernel message with its keywords replaced by the property names users typed.
 inline std::string with_property_names(std::string message)
@@ -94,7 +96,9 @@ inline std::vector<Coefficients> read_coefficients(LAMMPS_NS::Modify *modify, in
   given.activation = read_scalar(modify, "lubricatedActivation", caller, common.eps_activation);
   given.grid = read_scalar(modify, "lubricatedGridSpacing", caller, common.grid_spacing);
   read_scalar(modify, "lubricatedSaturation", caller, common.eps_saturation);
-  read_scalar(modify, "lubricatedRelease", caller, common.eps_release);
+  given.release = read_scalar(modify, "lubricatedRelease", caller, common.eps_release);
+  read_scalar(modify, "lubricatedLegendre", caller, common.legendre);
+  complete_defaults(common, given);
 
   for (int i = 1; i <= ntypes; i++)
     for (int j = 1; j <= ntypes; j++) {

@@ -4,7 +4,7 @@
 //
 //   e_d [ncontact N | tcontact t_c] [viscosity mu_f] [activation eps_al | grid dx]
 //       [saturation eps_1] [release eps_2] [integration exact | sampled]
-//       [friction mu_c] [tangential e_t] [rolling mu_r] [shearfilm yes | no]
+//       [friction mu_c] [tangential e_t] [rolling mu_r] [shearfilm yes | no] [legendre A]
 #pragma once
 
 #include <cmath>
@@ -30,8 +30,9 @@ struct Coefficients {
   double e_tangential = -1.0;       // tangential restitution e_t in [0, 1]; < 0: e_d
   double rolling_friction = 0.0;    // rolling resistance mu_r >= 0 (a length ratio)
   int shearfilm = -1;               // shear film: 1 yes, 0 no, -1 yes when friction > 0
+  double legendre = 0.0;            // A > 0: contact calibrated to e / e_d = exp(-A / St)
 
-  static constexpr int packed_size = 13;
+  static constexpr int packed_size = 14;
 
   bool wet() const { return viscosity > 0.0; }
   double tangential_restitution() const { return e_tangential >= 0.0 ? e_tangential : e_dry; }
@@ -47,7 +48,7 @@ struct Coefficients {
                                    eps_activation, grid_spacing, eps_saturation, eps_release,
                                    exact_contact ? 1.0 : 0.0,
                                    friction,       e_tangential, rolling_friction,
-                                   static_cast<double>(shearfilm)};
+                                   static_cast<double>(shearfilm), legendre};
     for (int i = 0; i < packed_size; ++i) buf[i] = v[i];
   }
   void unpack(const double *buf)
@@ -65,6 +66,7 @@ struct Coefficients {
     e_tangential = buf[10];
     rolling_friction = buf[11];
     shearfilm = static_cast<int>(buf[12]);
+    legendre = buf[13];
   }
 };
 
@@ -114,6 +116,15 @@ inline std::string validate(const Coefficients &c)
   if (c.e_tangential != -1.0 && !(c.e_tangential >= 0.0 && c.e_tangential <= 1.0))
     return range_error("tangential", c.e_tangential, "0 <= e_t <= 1");
   if (!(c.rolling_friction >= 0.0)) return range_error("rolling", c.rolling_friction, "mu_r >= 0");
+  if (!(c.legendre >= 0.0)) return range_error("legendre", c.legendre, "A >= 0");
+  if (c.legendre > 0.0) {
+    if (!c.wet()) return "legendre needs a wet contact (viscosity > 0)";
+    if (!c.exact_contact) return "legendre needs integration exact";
+    if (c.eps_release < 0.0)
+      return "release = " + detail::number(c.eps_release) +
+          " is out of range with legendre (allowed: 0 <= eps_2 < eps_1; the calibrated contact "
+          "replaces the film in overlap)";
+  }
   if (c.wet()) {
     if (c.grid_spacing < 0.0) return range_error("grid", c.grid_spacing, "dx > 0");
     if (c.grid_spacing == 0.0) {
@@ -130,8 +141,16 @@ inline std::string validate(const Coefficients &c)
 // Which of the keywords with alternatives or sentinel defaults were given (pair_coeff words,
 // or LIGGGHTS properties that exist).
 struct Given {
-  bool ncontact = false, tcontact = false, activation = false, grid = false, tangential = false;
+  bool ncontact = false, tcontact = false, activation = false, grid = false, tangential = false,
+       release = false;
 };
+
+// Defaults that depend on other keywords: with legendre the film ends at contact (eps_2 = 0),
+// because the calibrated contact stands for the film in overlap.
+inline void complete_defaults(Coefficients &c, const Given &given)
+{
+  if (c.legendre > 0.0 && !given.release) c.eps_release = 0.0;
+}
 
 // The checks that depend on which keywords were given, then validate().
 inline std::string validate_given(const Coefficients &c, const Given &given)
@@ -180,18 +199,20 @@ inline std::string parse_coefficients(const std::vector<std::string> &words, siz
     else if (key == "activation") target = &c.eps_activation, given.activation = true;
     else if (key == "grid") target = &c.grid_spacing, given.grid = true;
     else if (key == "saturation") target = &c.eps_saturation;
-    else if (key == "release") target = &c.eps_release;
+    else if (key == "release") target = &c.eps_release, given.release = true;
     else if (key == "friction") target = &c.friction;
     else if (key == "tangential") target = &c.e_tangential, given.tangential = true;
     else if (key == "rolling") target = &c.rolling_friction;
+    else if (key == "legendre") target = &c.legendre;
     else
       return "unknown keyword '" + key +
           "' (expected ncontact, tcontact, viscosity, activation, grid, saturation, release, "
-          "integration, friction, tangential, rolling or shearfilm)";
+          "integration, friction, tangential, rolling, shearfilm or legendre)";
     if (i + 1 >= words.size()) return "missing value for keyword " + key;
     if (!detail::to_number(words[i + 1], *target))
       return "expected a number for keyword " + key + ", got '" + words[i + 1] + "'";
   }
+  complete_defaults(c, given);
   return validate_given(c, given);
 }
 

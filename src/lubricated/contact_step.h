@@ -48,6 +48,40 @@ struct ContactStep {
 
 constexpr double min_steps_per_contact = 1.5;
 
+// A loss at the start of a contact (the wet-restitution calibration of normal_model.h): the
+// oscillator starts at S(v) <= v, v the approach speed. S depends on v alone, so every step
+// reconstructs it from the gaps it sees: no contact history.
+struct EntryLoss {
+  double film_loss = 0.0;         // speed the film takes from eps_al to contact, one way  [velocity]
+  double pending = 0.0;           // part of it not yet in v (applied in the steps to come)
+  double stokes_speed = 0.0;      // impact speed / St  [velocity]
+  double decay_constant = 0.0;    // A of e / e_d = exp(-A / St)
+  double restitution = 1.0;       // e_d of the contact
+
+  // After the pending film the contact starts at v_c = v - pending; u0 = v_c + film_loss is
+  // the impact speed of an isolated collision. The contact must return
+  //   e_d exp(-A / St(u0)) u0 + film_loss
+  // for the film's pull on the way out to leave e_d exp(-A / St) u0; the pending film acts
+  // at the start of the contact, so it is added back. dS = S'(v).
+  double start_speed(double v, double &dS) const
+  {
+    const double contact = v - pending;
+    dS = 1.0;
+    if (!(contact > 0.0)) return v;    // the film stops the pair before contact
+    const double u0 = contact + film_loss, x = decay_constant * stokes_speed / u0;
+    const double decay = std::exp(-x);
+    const double calibrated = u0 * decay + film_loss / restitution;
+    if (!(calibrated < contact)) return v;    // never less loss than the dry contact
+    dS = decay * (1.0 + x);
+    return pending + calibrated;
+  }
+  double start_speed(double v) const
+  {
+    double dS;
+    return start_speed(v, dS);
+  }
+};
+
 namespace detail {
 
 // Quadratic interpolation in a table of n + 1 values over x = ratio / (1 + ratio) in [0, 1].
@@ -141,17 +175,24 @@ inline double propagate_contact(const ContactStep &cs, double g, double v, doubl
 
 // Relative normal acceleration (force / m_e, along n) applied over the coming step.
 // g1: gap now; u: normal relative velocity over the last step (> 0 separating).
-__attribute__((noinline)) inline double contact_acceleration(const ContactStep &cs, double g1, double u)
+// kick: velocity change other forces (the film) give the pair over the coming step; in the
+// steps where a contact starts the contact follows the motion after it (a film that stops
+// the pair before contact leaves no contact to predict).
+__attribute__((noinline)) inline double contact_acceleration(const ContactStep &cs, double g1, double u,
+                                                             const EntryLoss *loss = nullptr,
+                                                             double kick = 0.0)
 {
   const double dt = cs.dt, a = cs.decay_rate, w = cs.omega;
   const double g0 = g1 - u * dt;
   double g2;
   if (g1 >= 0.0) {
     if (g0 >= 0.0) {
-      if (g1 + u * dt >= 0.0) return 0.0;    // apart now and a step from now
+      const double v = u + kick;
+      if (g1 + v * dt >= 0.0) return 0.0;    // apart now and a step from now
       // Contact starts within the coming step, after free flight over g1.
-      const double t_entry = g1 / -u;
-      g2 = propagate_contact(cs, 0.0, u, dt - t_entry);
+      const double t_entry = g1 / -v;
+      g2 = propagate_contact(cs, 0.0, loss ? -loss->start_speed(-v) : v, dt - t_entry);
+      return (g2 - 2.0 * g1 + g0) / (dt * dt) - kick / dt;
     } else {
       // Contact ended within the last step: find the exit time s after the previous sample
       // such that the oscillator from g0 exits at s and flies on to g1:
@@ -172,16 +213,27 @@ __attribute__((noinline)) inline double contact_acceleration(const ContactStep &
   } else if (g0 >= 0.0) {
     // Contact started within the last step, s before now, at the speed v_in of free flight:
     //   g0 h(s) + g1 (dt - s) = 0,  h(s) = exp(-a s) sin(w s) / w  (times -1, falling in s).
+    // With an entry loss the oscillator starts at S(v), v = g0 / (dt - s) (EntryLoss), and
+    // the mismatch is S(v) (dt - s) h(s) + g1 (dt - s), which is the above when S(v) = v.
     double decay_s = 1.0, sin_s = 0.0, cos_s = 1.0;
     auto mismatch = [&](double t, double &df) {
       decay_s = std::exp(-a * t), sin_s = std::sin(w * t), cos_s = std::cos(w * t);
-      df = -g0 * decay_s * (cos_s - a / w * sin_s) + g1;
-      return -g0 * decay_s * sin_s / w - g1 * (dt - t);
+      const double rest = dt - t;
+      if (!loss) {
+        df = -g0 * decay_s * (cos_s - a / w * sin_s) + g1;
+        return -g0 * decay_s * sin_s / w - g1 * rest;
+      }
+      const double v = g0 / rest;
+      double dS;
+      const double S = loss->start_speed(v, dS);
+      df = -(dS * v - S) * decay_s * sin_s / w - S * rest * decay_s * (cos_s - a / w * sin_s) + g1;
+      return -S * rest * decay_s * sin_s / w - g1 * rest;
     };
+    const double guess_ratio = loss ? -g1 * -u / (loss->start_speed(-u) * g0) : -g1 / g0;
     double evaluated_at;
     const double s = detail::falling_root(
         mismatch, 0.0, dt,
-        g0 > 0.0 ? detail::table_lookup(cs.entry_guess, ContactStep::table_size, -g1 / g0) : dt,
+        g0 > 0.0 ? detail::table_lookup(cs.entry_guess, ContactStep::table_size, guess_ratio) : dt,
         evaluated_at);
     {    // move decay_s, sin_s, cos_s from the last evaluated point to s (first order)
       const double shift = s - evaluated_at;
@@ -190,9 +242,14 @@ __attribute__((noinline)) inline double contact_acceleration(const ContactStep &
       sin_s += w * shift * cos_s;
       cos_s -= w * shift * sin_old;
     }
-    const double v_in = s < 0.5 * dt ? -g0 / (dt - s) : g1 * w / (decay_s * sin_s);
+    const double v_in = s < 0.5 * dt ? (loss ? -loss->start_speed(g0 / (dt - s)) : -g0 / (dt - s))
+                                     : g1 * w / (decay_s * sin_s);
+    // The kick may stop the oscillator's own velocity, not reverse or speed it up (the film
+    // was capped against the mean velocity of the last step, not this one).
     const double v1 = v_in * decay_s * (cos_s - a / w * sin_s);
-    g2 = propagate_contact(cs, g1, v1, dt);
+    const double stop = v1 < 0.0 ? std::min(std::max(kick, 0.0), -v1) : std::max(std::min(kick, 0.0), -v1);
+    g2 = propagate_contact(cs, g1, v1 + stop, dt);
+    return (g2 - 2.0 * g1 + g0) / (dt * dt) - kick / dt;
   } else {
     // Sustained contact: the exact two-step recurrence of the damped oscillator.
     g2 = 2.0 * cs.E * cs.C * g1 - cs.E * cs.E * g0;
@@ -204,13 +261,14 @@ __attribute__((noinline)) inline double contact_acceleration(const ContactStep &
 // The same at the start of a run, where engines hold full-step velocities (velocity Verlet's
 // v^n, not v^(n-1/2)) and apply only half a kick before the first position update: the
 // acceleration that makes that first half-step land on the exact trajectory from (g, v).
-__attribute__((noinline)) inline double contact_acceleration_at_start(const ContactStep &cs, double g, double v)
+__attribute__((noinline)) inline double contact_acceleration_at_start(const ContactStep &cs, double g, double v,
+                                                                      const EntryLoss *loss = nullptr)
 {
   const double dt = cs.dt;
   double g1;
   if (g >= 0.0) {
     if (g + v * dt >= 0.0) return 0.0;
-    g1 = propagate_contact(cs, 0.0, v, dt - g / -v);
+    g1 = propagate_contact(cs, 0.0, loss ? -loss->start_speed(-v) : v, dt - g / -v);
   } else {
     g1 = propagate_contact(cs, g, v, dt);
   }

@@ -129,12 +129,17 @@ struct Lubrication {
         (lambda_saturated - lambda_al) * (eps_saturation - std::max(eps, eps_release));
   }
 
-  double film_integral(double eps, double radius) const
+  double film_integral(double eps, const FilmRadius &radius) const
   {
     const double eps_al = activation_for(radius);
     if (grid_spacing <= 0.0)
       return film_integral(eps, eps_al, lambda_activation, integral_activation);
-    return film_integral(eps, eps_al, expansion.lambda(eps_al), expansion.integral(eps_al));
+    const double l = std::log(eps_al);
+    return film_integral(eps, eps_al, expansion.lambda(eps_al, l), expansion.integral(eps_al, l));
+  }
+  double film_integral(double eps, double radius) const
+  {
+    return film_integral(eps, FilmRadius(radius));
   }
 
   // Momentum the film transfers to the pair (along n) while the gap goes from gap_before to

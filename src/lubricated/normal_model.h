@@ -27,6 +27,10 @@ struct NormalModel {
   ContactStep step;           // exact integration over one step (contact_step.h)
   bool exact = true;          // false: sample F_s once per step (for comparison only)
   Lubrication lubrication;
+  double legendre = 0.0;      // A > 0: calibrate the contact to e / e_d = exp(-A / St)
+  double restitution = 1.0;   // e_d of the contact
+
+  bool calibrated() const { return legendre > 0.0 && lubrication.active(); }
 
   // Whether the pair needs evaluating at gap g with normal velocity u (cheap pre-test):
   // in the film or in contact now, or within the last or next step of it.
@@ -47,7 +51,34 @@ inline NormalModel make_normal_model(const Coefficients &c, Partner partner, dou
   m.exact = c.exact_contact;
   m.lubrication = make_lubrication(partner, c.viscosity, c.eps_activation, c.grid_spacing,
                                    c.eps_saturation, c.eps_release);
+  m.legendre = c.legendre;
+  m.restitution = c.e_dry;
   return m;
+}
+
+// Wet-restitution calibration (keyword legendre A; doc/pair_lubricated_springdashpot.rst).
+// For an isolated collision the film takes the same speed L = 6 pi mu R^2 P(0) / m_e on the
+// way in and on the way out (P: the film integral of lubrication.h, nothing in overlap), and
+// the contact returns e_d times its entry speed. Starting the contact at a speed chosen from
+// the approach speed alone (EntryLoss, contact_step.h) makes the rebound e_d exp(-A / St) u0,
+// u0 the impact speed, St = m_e u0 / (c_inv 6 pi mu R^2) (c_inv: the 1/eps coefficient of
+// lambda, 1 wall, 1/2 pair; for a sphere on a wall and for two equal spheres
+// St = (2/9) rho_p R u0 / mu_f). gap_before: the gap from which on the film has not yet
+// acted on the velocity the contact sees (a step ago; now at a run start).
+inline EntryLoss entry_loss(const NormalModel &m, const FilmRadius &radius, double reduced_mass,
+                            double gap_before)
+{
+  const Lubrication &lub = m.lubrication;
+  const double speed_per_integral = lub.six_pi_mu * radius.value * radius.value / reduced_mass;
+  const double at_contact = lub.film_integral(0.0, radius);
+  EntryLoss loss;
+  loss.film_loss = speed_per_integral * at_contact;
+  loss.pending = speed_per_integral *
+      (at_contact - lub.film_integral(std::max(gap_before, 0.0) * radius.inverse, radius));
+  loss.stokes_speed = speed_per_integral * lub.expansion.c_inv;
+  loss.decay_constant = m.legendre;
+  loss.restitution = m.restitution;
+  return loss;
 }
 
 struct NormalForce {
@@ -71,17 +102,6 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
     if (!m.exact) f.contact = k * overlap - reduced_mass * m.contact.damping_per_mass * u_n;
     f.energy = 0.5 * k * overlap * overlap;
   }
-  if (m.exact && contact_possible(gap, u_n, m.step.dt)) {
-    const ContactStep &cs = m.step;
-    const double g0 = gap - u_n * cs.dt;
-    const double g2 = 2.0 * cs.E * cs.C * gap - cs.E * cs.E * g0;
-    if (!at_start && gap < 0.0 && g0 < 0.0 && g2 < 0.0)    // sustained contact, inline:
-      // (g2 - 2 gap + g0) / dt^2 of the recurrence, as a spring-dashpot (contact_step.h)
-      f.contact = -reduced_mass * (cs.stiffness_step * gap + cs.damping_step * u_n);
-    else
-      f.contact = reduced_mass *
-          (at_start ? contact_acceleration_at_start(cs, gap, u_n) : contact_acceleration(cs, gap, u_n));
-  }
   if (m.lubrication.active()) {
     const double dt = m.step.dt;
     const double limit = reduced_mass * std::fabs(u_n);
@@ -95,6 +115,29 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
       f.lubrication = -m.lubrication.damping(gap * radius.inverse, radius.value) * u_n;
       // At a run start only half a kick follows: it may stop the motion, not reverse it.
       if (m.exact) f.lubrication = std::max(-2.0 * limit / dt, std::min(2.0 * limit / dt, f.lubrication));
+    }
+  }
+  if (m.exact && contact_possible(gap, u_n, m.step.dt)) {
+    const ContactStep &cs = m.step;
+    const double g0 = gap - u_n * cs.dt;
+    const double g2 = 2.0 * cs.E * cs.C * gap - cs.E * cs.E * g0;
+    if (!at_start && gap < 0.0 && g0 < 0.0 && g2 < 0.0)    // sustained contact, inline:
+      // (g2 - 2 gap + g0) / dt^2 of the recurrence, as a spring-dashpot (contact_step.h)
+      f.contact = -reduced_mass * (cs.stiffness_step * gap + cs.damping_step * u_n);
+    else {
+      // Where a contact may start, it follows the motion after the film's kick of this step
+      // (a film that stops the pair leaves no contact), with the calibrated entry loss.
+      const double before = at_start ? gap : g0;
+      EntryLoss loss;
+      const EntryLoss *entry = nullptr;
+      if (m.calibrated() && before >= 0.0)
+        loss = entry_loss(m, radius, reduced_mass, gap >= 0.0 ? gap : g0), entry = &loss;
+      if (at_start) {
+        f.contact = reduced_mass * contact_acceleration_at_start(cs, gap, u_n, entry);
+      } else {
+        const double kick = g0 >= 0.0 ? f.lubrication * cs.dt / reduced_mass : 0.0;
+        f.contact = reduced_mass * contact_acceleration(cs, gap, u_n, entry, kick);
+      }
     }
   }
   return f;

@@ -83,7 +83,30 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"0.9 saturation 1e-3 release 1e-3", "eps_2 < eps_1"},
                       BadInput{"0.9 frobnicate 3", "unknown keyword 'frobnicate'"},
                       BadInput{"0.9 viscosity", "missing value for keyword viscosity"},
-                      BadInput{"0.9 viscosity x", "keyword viscosity, got 'x'"}));
+                      BadInput{"0.9 viscosity x", "keyword viscosity, got 'x'"},
+                      BadInput{"0.9 viscosity 1e-3 activation 0.1 legendre -35", "A >= 0"},
+                      BadInput{"0.9 legendre 35", "legendre needs a wet contact (viscosity > 0)"},
+                      BadInput{"0.9 viscosity 1e-3 activation 0.1 legendre 35 integration sampled",
+                               "legendre needs integration exact"},
+                      BadInput{"0.9 viscosity 1e-3 activation 0.1 legendre 35 release -0.01",
+                               "release = -0.01 is out of range with legendre"}));
+
+TEST(Coefficients, LegendreEndsTheFilmAtContactUnlessReleaseIsGiven)
+{
+  Coefficients c;
+  ASSERT_EQ(parse("0.9 viscosity 1e-3 activation 0.1", c), "");
+  EXPECT_EQ(c.eps_release, -1e-2);
+  ASSERT_EQ(parse("0.9 viscosity 1e-3 activation 0.1 legendre 35", c), "");
+  EXPECT_EQ(c.legendre, 35.0);
+  EXPECT_EQ(c.eps_release, 0.0);
+  ASSERT_EQ(parse("0.9 viscosity 1e-3 activation 0.1 legendre 35 release 5e-4", c), "");
+  EXPECT_EQ(c.eps_release, 5e-4);
+  double buf[Coefficients::packed_size];
+  c.pack(buf);
+  Coefficients back;
+  back.unpack(buf);
+  EXPECT_EQ(back.legendre, 35.0);
+}
 
 TEST(Coefficients, TimeStepChecks)
 {

@@ -53,6 +53,14 @@ CASES = {
                        ["viscosity = -2", "mu_f >= 0"]),
     "wall_missing_plane": (script(fix="fix w all wall/lubrication 0.9 ncontact 8"), ["missing wall style"]),
     "wall_both_null": (script(fix="fix w all wall/lubrication 0.9 zplane NULL NULL"), ["both walls are NULL"]),
+    "legendre_negative": (script("pair_coeff * * 0.9 viscosity 1e-3 activation 0.1 legendre -35"),
+                          ["legendre = -35", "A >= 0"]),
+    "legendre_dry": (script("pair_coeff * * 0.9 legendre 35"), ["legendre needs a wet contact"]),
+    "legendre_sampled": (script("pair_coeff * * 0.9 viscosity 1e-3 activation 0.1 legendre 35 "
+                                "integration sampled"), ["legendre needs integration exact"]),
+    "wall_legendre_release": (script(fix="fix w all wall/lubrication 0.9 viscosity 1e-3 activation 0.1 "
+                                         "legendre 35 release -0.01 zplane 0.0 NULL"),
+                              ["release = -0.01 is out of range with legendre"]),
     "negative_friction": (script("pair_coeff * * 0.9 friction -0.3"), ["friction = -0.3", "mu_c >= 0"]),
     "tangential_above_one": (script("pair_coeff * * 0.9 friction 0.3 tangential 1.2"),
                              ["tangential = 1.2", "0 <= e_t <= 1"]),

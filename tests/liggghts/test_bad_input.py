@@ -36,6 +36,14 @@ CASES = {
                                     ["lubricatedContactTime = 1e-06", "shorter than the time step 5e-05"]),
     "grid not positive": (("lubricatedActivation scalar 0.09375", "lubricatedGridSpacing scalar -1e-4"),
                           ["lubricatedGridSpacing = -0.0001", "dx > 0"]),
+    "negative legendre": (("lubricatedActivation scalar 0.09375",
+                           "lubricatedActivation scalar 0.09375\nfix m9 all property/global lubricatedLegendre scalar -35"),
+                          ["lubricatedLegendre = -35", "A >= 0"]),
+    "legendre with a film in overlap": (
+        ("lubricatedActivation scalar 0.09375",
+         "lubricatedActivation scalar 0.09375\nfix m9 all property/global lubricatedLegendre scalar 35\n"
+         "fix m10 all property/global lubricatedRelease scalar -0.01"),
+        ["lubricatedRelease = -0.01 is out of range with lubricatedLegendre"]),
     "missing restitution": (("fix m1 all property/global coefficientRestitution peratomtypepair 2 0.9 0.9 0.9 0.9", ""),
                             ["coefficientRestitution", "model lubricated"]),
 }

@@ -34,6 +34,19 @@ def test_wet_restitution_matches_lammps(run, kind, stokes):
         assert lig["e"] / 0.9 == pytest.approx(scenes.legendre(stokes), abs=0.1)
 
 
+@pytest.mark.parametrize("kind", ["wall", "pair"])
+def test_calibrated_contact_matches_lammps_and_the_law(run, kind):
+    """lubricatedLegendre 35 is pair_coeff's legendre 35: Legendre's law at St = 20, where
+    the paper's film alone falls under it (test above: only bounded from above)."""
+    mu = scenes.viscosity_for_stokes(20)
+    build = {"wall": (liggghts_scenes.wall_bounce, scenes.wall_bounce),
+             "pair": (liggghts_scenes.pair_bounce, scenes.pair_bounce)}[kind]
+    lig = run.lig(build[0](0.9, mu=mu, legendre=35))
+    lmp = run.lmp(build[1](0.9, mu=mu, extra="legendre 35"))
+    assert lig["e"] == pytest.approx(lmp["e"], abs=1e-3)
+    assert lig["e"] / 0.9 == pytest.approx(scenes.legendre(20), abs=0.05)
+
+
 def test_unequal_masses_match_lammps(run):
     mu = scenes.viscosity_for_stokes(100)
     lig = run.lig(liggghts_scenes.pair_bounce(0.7, mass_ratio=3.0, radius_ratio=0.5, mu=mu))
