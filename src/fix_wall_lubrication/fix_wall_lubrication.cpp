@@ -109,6 +109,8 @@ void FixWallLubrication::init()
   if (!problem.empty()) error->all(FLERR, "{}: {}", STYLE, problem);
   const std::string advice = lub::time_step_warning(coeffs, update->dt);
   if (!advice.empty() && comm->me == 0) error->warning(FLERR, "{}: {}", STYLE, advice);
+  const std::string calibration = lub::calibration_warning(coeffs, lub::Partner::wall);
+  if (!calibration.empty() && comm->me == 0) error->warning(FLERR, "{}: {}", STYLE, calibration);
   reset_dt();
   // Under fix nve/sphere/midpoint the step-exact integration uses the velocity over the
   // last step, which that fix provides (see pair_style lubricated/springdashpot).

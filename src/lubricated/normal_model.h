@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace lubricated {
 
@@ -79,6 +80,24 @@ inline EntryLoss entry_loss(const NormalModel &m, const FilmRadius &radius, doub
   loss.decay_constant = m.legendre;
   loss.restitution = m.restitution;
   return loss;
+}
+
+// The calibration can only remove speed: it acts at no St when the film alone, in and out,
+// takes more than the law allows, P(0)/c_inv (1 + 1/e_d) >= A (St -> infinity in
+// EntryLoss::start_speed). Advice for a fixed eps_al ("" when fine; with a grid spacing
+// P(0) depends on each contact's R).
+inline std::string calibration_warning(const Coefficients &c, Partner partner)
+{
+  if (!(c.legendre > 0.0 && c.wet() && c.grid_spacing <= 0.0)) return "";
+  const Lubrication lub = make_lubrication(partner, c.viscosity, c.eps_activation, 0.0,
+                                           c.eps_saturation, c.eps_release);
+  const double loss = lub.film_integral(0.0, 1.0) / lub.expansion.c_inv;
+  if (loss * (1.0 + 1.0 / c.e_dry) < c.legendre) return "";
+  return "legendre " + detail::number(c.legendre) + " cannot act with e_d = " + detail::number(c.e_dry) +
+      " and activation " + detail::number(c.eps_activation) +
+      ": the film alone takes more than the law allows (e_d > " +
+      detail::number(std::ceil(100.0 * loss / (c.legendre - loss)) / 100.0) +
+      " needed, or a smaller activation)";
 }
 
 struct NormalForce {

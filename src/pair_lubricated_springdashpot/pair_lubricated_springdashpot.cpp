@@ -117,6 +117,7 @@ void PairLubricatedSpringDashpot::init_style()
       const std::string problem = lub::validate_time_step(c, update->dt);
       if (!problem.empty()) error->all(FLERR, "{} types {} {}: {}", STYLE, i, j, problem);
       advice.insert(lub::time_step_warning(c, update->dt));
+      advice.insert(lub::calibration_warning(c, lub::Partner::particle));
       any_wet = any_wet || c.wet();
       any_tangential = any_tangential || c.tangential();
       any_friction = any_friction || c.friction > 0.0;

@@ -137,3 +137,29 @@ TEST(WetCalibration, ExtremeInputsStayFiniteAndGainNoEnergy)
             EXPECT_LE(std::max(u, 0.0), e * (1.0 + 1e-9)) << where;
           }
 }
+
+TEST(WetCalibration, WarnsWhereItCannotAct)
+{
+  Coefficients c;
+  c.viscosity = 1e-3;
+  c.eps_activation = eps_al;
+  c.eps_release = 0.0;
+  c.legendre = legendre_constant;
+  c.e_dry = 0.9;
+  EXPECT_EQ(calibration_warning(c, Partner::wall), "");
+  // e_d = 0.1: the film's speed loss P(0) = 4.56 per St on the way out alone exceeds
+  // e_d exp(-35/St) u0 at every St; the threshold is P / (A - P) = 0.15.
+  c.e_dry = 0.1;
+  const std::string message = calibration_warning(c, Partner::wall);
+  EXPECT_NE(message.find("legendre 35 cannot act with e_d = 0.1"), std::string::npos) << message;
+  EXPECT_NE(message.find("e_d > 0.15"), std::string::npos) << message;
+  // Beyond the threshold the contact stays dry: the film takes L = P(0)/St of the impact speed
+  // in and out, e = e_d (1 - L) - L = 0.0749 at St = 200, under the law's 0.1 exp(-35/200) = 0.084.
+  const double dt = 0.003, stokes = 200.0;
+  NormalModel m = model(stokes, dt, 0.04, true, legendre_constant);
+  m.restitution = 0.1;
+  m.contact = spring_dashpot_from_restitution(0.1, 0.04);
+  m.step = make_contact_step(m.contact, dt);
+  const double film = m.lubrication.film_integral(0.0, 1.0) / stokes;
+  EXPECT_NEAR(rebound(m, dt, true, 0.0), 0.1 * (1.0 - film) - film, 2e-3);
+}

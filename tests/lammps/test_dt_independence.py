@@ -82,3 +82,15 @@ def test_paper_film_alone_falls_under_the_law_at_st_20(lmp):
     ratio = lmp(scenes.wall_bounce(E_DRY, dt_ru=0.003, mu=scenes.viscosity_for_stokes(20),
                                    tcontact_ru=0.04))["e"] / E_DRY
     assert ratio < scenes.legendre(20) - 0.1
+
+
+def test_warns_where_the_calibration_cannot_act(lmp):
+    """e_d = 0.1 with eps_al = 0.09375: the film alone takes more than the law allows
+    (threshold e_d > 0.15, kernel test); both the wall fix and the pair style say so."""
+    mu = scenes.viscosity_for_stokes(100)
+    lmp(scenes.wall_bounce(0.1, mu=mu, tcontact_ru=0.04, extra="legendre 35"))
+    assert "WARNING: Fix wall/lubrication: legendre 35 cannot act with e_d = 0.1" in lmp.log
+    lmp(scenes.pair_bounce(0.1, mu=mu, tcontact_ru=0.04, extra="legendre 35"))
+    assert "legendre 35 cannot act with e_d = 0.1" in lmp.log
+    lmp(scenes.wall_bounce(E_DRY, mu=mu, tcontact_ru=0.04, extra="legendre 35"))
+    assert "cannot act" not in lmp.log
