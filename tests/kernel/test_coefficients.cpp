@@ -10,6 +10,16 @@
 
 using namespace lubricated;
 
+// The coefficients as a restart file carries them (pack, then unpack).
+static Coefficients restart_copy(const Coefficients &c)
+{
+  double buf[Coefficients::packed_size];
+  c.pack(buf);
+  Coefficients back;
+  back.unpack(buf);
+  return back;
+}
+
 static std::string parse(const std::string &line, Coefficients &c)
 {
   std::istringstream in(line);
@@ -42,10 +52,7 @@ TEST(Coefficients, AllKeywords)
   EXPECT_EQ(c.eps_release, -0.02);
   ASSERT_EQ(parse("0.5 ncontact 16 viscosity 1e-3 grid 1e-4", c), "");
   EXPECT_EQ(c.grid_spacing, 1e-4);
-  double buf[Coefficients::packed_size];
-  c.pack(buf);
-  Coefficients d;
-  d.unpack(buf);
+  const Coefficients d = restart_copy(c);
   EXPECT_EQ(d.n_contact, 16.0);
   EXPECT_EQ(d.grid_spacing, 1e-4);
 }
@@ -101,11 +108,7 @@ TEST(Coefficients, LegendreEndsTheFilmAtContactUnlessReleaseIsGiven)
   EXPECT_EQ(c.eps_release, 0.0);
   ASSERT_EQ(parse("0.9 viscosity 1e-3 activation 0.1 legendre 35 release 5e-4", c), "");
   EXPECT_EQ(c.eps_release, 5e-4);
-  double buf[Coefficients::packed_size];
-  c.pack(buf);
-  Coefficients back;
-  back.unpack(buf);
-  EXPECT_EQ(back.legendre, 35.0);
+  EXPECT_EQ(restart_copy(c).legendre, 35.0);
 }
 
 TEST(Coefficients, TimeStepChecks)

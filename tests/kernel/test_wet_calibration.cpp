@@ -16,18 +16,24 @@ namespace {
 constexpr double e_dry = 0.9, eps_al = 0.09375, legendre_constant = 35.0;
 
 // Units R = 1, impact speed U = 1, mass 1 per sphere: St = m U / (6 pi mu R^2) for the wall
-// and for two equal spheres at relative speed U (m_e = 1/2, c_inv = 1/2).
-NormalModel model(double stokes, double dt, double t_c, bool wall, double legendre)
+// and for two equal spheres at relative speed U (m_e = 1/2, c_inv = 1/2). Keyword defaults:
+// the film ends at contact with legendre, at the paper's -1e-2 R of overlap without.
+Coefficients wet(double e, double stokes, double legendre)
 {
   Coefficients c;
-  c.e_dry = e_dry;
-  c.t_contact = t_c;
+  c.e_dry = e;
   c.viscosity = 1.0 / (6.0 * pi * stokes);
   c.eps_activation = eps_al;
   c.legendre = legendre;
-  Given given;
-  complete_defaults(c, given);
+  complete_defaults(c, Given());
   EXPECT_EQ(validate(c), "");
+  return c;
+}
+
+NormalModel model(double stokes, double dt, double t_c, bool wall, double legendre)
+{
+  Coefficients c = wet(e_dry, stokes, legendre);
+  c.t_contact = t_c;
   return make_normal_model(c, wall ? Partner::wall : Partner::particle, dt);
 }
 
@@ -114,14 +120,8 @@ TEST(WetCalibration, ExtremeInputsStayFiniteAndGainNoEnergy)
       for (double n_c : {1.0, 2.0, 8.0, 64.0})
         for (double e : {0.01, 0.5, 1.0})
           for (double dt : {0.001, 0.05, 0.5}) {
-            Coefficients c;
-            c.e_dry = e;
+            Coefficients c = wet(e, stokes, legendre);
             c.n_contact = n_c;
-            c.viscosity = 1.0 / (6.0 * pi * stokes);
-            c.eps_activation = eps_al;
-            c.legendre = legendre;
-            c.eps_release = 0.0;
-            ASSERT_EQ(validate(c), "");
             const NormalModel m = make_normal_model(c, Partner::wall, dt);
             double g = eps_al + 0.05, u = -1.0, fastest = 0.0;
             // Until a step past the film: the step after an exit still corrects the velocity.
@@ -140,12 +140,7 @@ TEST(WetCalibration, ExtremeInputsStayFiniteAndGainNoEnergy)
 
 TEST(WetCalibration, WarnsWhereItCannotAct)
 {
-  Coefficients c;
-  c.viscosity = 1e-3;
-  c.eps_activation = eps_al;
-  c.eps_release = 0.0;
-  c.legendre = legendre_constant;
-  c.e_dry = 0.9;
+  Coefficients c = wet(0.9, 100.0, legendre_constant);
   EXPECT_EQ(calibration_warning(c, Partner::wall), "");
   // e_d = 0.1: the film's speed loss P(0) = 4.56 per St on the way out alone exceeds
   // e_d exp(-35/St) u0 at every St; the threshold is P / (A - P) = 0.15.
