@@ -129,17 +129,26 @@ struct Lubrication {
         (lambda_saturated - lambda_al) * (eps_saturation - std::max(eps, eps_release));
   }
 
-  double film_integral(double eps, const FilmRadius &radius) const
+  // eps_al with lambda and L there, for a contact of film radius R: kept per type pair for a
+  // fixed eps_al, from one logarithm with a grid spacing.
+  struct Activation {
+    double eps, lambda, integral;
+  };
+  Activation activation(const FilmRadius &radius) const
   {
     const double eps_al = activation_for(radius);
-    if (grid_spacing <= 0.0)
-      return film_integral(eps, eps_al, lambda_activation, integral_activation);
+    if (grid_spacing <= 0.0) return {eps_al, lambda_activation, integral_activation};
     const double l = std::log(eps_al);
-    return film_integral(eps, eps_al, expansion.lambda(eps_al, l), expansion.integral(eps_al, l));
+    return {eps_al, expansion.lambda(eps_al, l), expansion.integral(eps_al, l)};
+  }
+
+  double film_integral(double eps, const Activation &al) const
+  {
+    return film_integral(eps, al.eps, al.lambda, al.integral);
   }
   double film_integral(double eps, double radius) const
   {
-    return film_integral(eps, FilmRadius(radius));
+    return film_integral(eps, activation(FilmRadius(radius)));
   }
 
   // Momentum the film transfers to the pair (along n) while the gap goes from gap_before to
@@ -148,16 +157,9 @@ struct Lubrication {
   {
     const double before = gap_before * radius.inverse, after = gap_after * radius.inverse;
     const double eps_al = activation_for(radius);
-    if (before >= eps_al && after >= eps_al) return 0.0;
-    double lambda_al = lambda_activation, integral_al = integral_activation;
-    if (grid_spacing > 0.0) {    // eps_al per contact: one logarithm for both
-      const double l = std::log(eps_al);
-      lambda_al = expansion.lambda(eps_al, l);
-      integral_al = expansion.integral(eps_al, l);
-    }
-    return six_pi_mu * radius.value * radius.value *
-        (film_integral(after, eps_al, lambda_al, integral_al) -
-         film_integral(before, eps_al, lambda_al, integral_al));
+    if (before >= eps_al && after >= eps_al) return 0.0;    // no logarithm far from the film
+    const Activation al = activation(radius);
+    return six_pi_mu * radius.value * radius.value * (film_integral(after, al) - film_integral(before, al));
   }
 
   double impulse(double gap_before, double gap_after, double radius) const

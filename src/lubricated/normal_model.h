@@ -71,11 +71,12 @@ inline EntryLoss entry_loss(const NormalModel &m, const FilmRadius &radius, doub
 {
   const Lubrication &lub = m.lubrication;
   const double speed_per_integral = lub.six_pi_mu * radius.value * radius.value / reduced_mass;
-  const double at_contact = lub.film_integral(0.0, radius);
+  const Lubrication::Activation al = lub.activation(radius);
+  const double at_contact = lub.film_integral(0.0, al);
   EntryLoss loss;
   loss.film_loss = speed_per_integral * at_contact;
   loss.pending = speed_per_integral *
-      (at_contact - lub.film_integral(std::max(gap_before, 0.0) * radius.inverse, radius));
+      (at_contact - lub.film_integral(std::max(gap_before, 0.0) * radius.inverse, al));
   loss.stokes_speed = speed_per_integral * lub.expansion.c_inv;
   loss.decay_constant = m.legendre;
   loss.restitution = m.restitution;
