@@ -305,131 +305,140 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
   // integrator discards the set-up forces, so it needs no such treatment.
   const bool at_start = update->setupflag != 0 && !midpoint;
 
-  // No pair can close a gap wider than the largest relative displacement of one step, so a
-  // bound from the fastest owned or ghost atom rejects far pairs before any velocity work.
-  double vmax_sq = 0.0;
-  const int nall = atom->nlocal + atom->nghost;
-  for (int k = 0; k < nall; k++) {
-    const double *vk = midpoint ? midpoint->step_velocity(k) : v[k];
-    vmax_sq = std::max(vmax_sq, std::max(vk[0] * vk[0] + vk[1] * vk[1] + vk[2] * vk[2],
-                                         v[k][0] * v[k][0] + v[k][1] * v[k][1] + v[k][2] * v[k][2]));
-  }
-  const double margin = 2.0 * std::sqrt(vmax_sq) * dt;
-
   const int inum = list->inum;
   const int *ilist = list->ilist;
   const int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
+  const lub::NormalModel *model_table = models.data();
+  const double *reach_table = max_reach.data();
+  const int stride = ntypes_alloc + 1;
 
+  // Pass 1, branch-free: keep the list entries that can act within the coming step: in the
+  // film's reach (the largest of the two types) or in contact, or closing that gap within a
+  // step: gap < reach + |u_n| dt, i.e. rsq - |dv.del| dt < outer r, tested without a sqrt.
+  // With friction, entries holding an elongation to forget are kept too. Whether an entry
+  // is kept follows no pattern a branch predictor could learn, hence no branch.
+  int ncandidate = 0;
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
+    const double *vi = midpoint ? midpoint->step_velocity(i) : v[i];
+    const double vxi = vi[0], vyi = vi[1], vzi = vi[2];
     const double radi = radius[i];
-    const int itype = type[i];
+    const double *reach_row = reach_table + type[i] * stride;
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
-    // A pair that is not in contact now has no elongation to keep.
-    char *touched = TANGENTIAL && history ? history->touched(i) : nullptr;
-    auto forget = [&](int jj) {
-      if (TANGENTIAL && touched && touched[jj]) {
-        touched[jj] = 0;
-        double *h = history->values(i) + 3 * jj;
-        h[0] = h[1] = h[2] = 0.0;
-      }
-    };
-
-    // Sums on i kept in registers (f[i] may alias f[j] for the compiler).
-    double fxi = 0.0, fyi = 0.0, fzi = 0.0, txi = 0.0, tyi = 0.0, tzi = 0.0;
+    const char *touched = TANGENTIAL && history ? history->touched(i) : nullptr;
+    if (ncandidate + jnum > static_cast<int>(candidate_i.size())) {
+      candidate_i.resize(2 * (ncandidate + jnum));
+      candidate_jj.resize(2 * (ncandidate + jnum));
+    }
+    int *out_i = candidate_i.data(), *out_jj = candidate_jj.data();
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double delx = xi - x[j][0];
       const double dely = yi - x[j][1];
       const double delz = zi - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
-      const double radsum = radi + radius[j];
-      const lub::NormalModel &model = models[index(itype, type[j])];
-      {
-        // Farther than the film reaches (at most eps_al R_max or 0.75 dx) plus a step: skip.
-        const double near = radsum + margin + (WET ? max_reach[index(itype, type[j])] : 0.0);
-        if (rsq >= near * near) {
-          forget(jj);
-          continue;
+      const double outer = radi + radius[j] + (WET ? reach_row[type[j]] : 0.0);
+      const double *vj = midpoint ? midpoint->step_velocity(j) : v[j];
+      const double s = rsq - std::fabs((vxi - vj[0]) * delx + (vyi - vj[1]) * dely +
+                                       (vzi - vj[2]) * delz) * dt;
+      const double outer_sq = outer * outer;
+      out_i[ncandidate] = i;
+      out_jj[ncandidate] = jj;
+      int keep = (rsq < outer_sq) | (s <= 0.0) | (s * s < outer_sq * rsq);
+      if (TANGENTIAL && touched) keep |= touched[jj];
+      ncandidate += keep;
+    }
+  }
+
+  // Pass 2 over the kept entries only.
+  double **torque = atom->torque;
+  for (int c = 0; c < ncandidate; c++) {
+    const int i = candidate_i[c], jj = candidate_jj[c];
+    const int j = firstneigh[i][jj] & NEIGHMASK;
+    const double delx = x[i][0] - x[j][0];
+    const double dely = x[i][1] - x[j][1];
+    const double delz = x[i][2] - x[j][2];
+    const double rsq = delx * delx + dely * dely + delz * delz;
+    const double radi = radius[i];
+    const double radsum = radi + radius[j];
+    const lub::NormalModel &model = model_table[type[i] * stride + type[j]];
+    // A pair that is not in contact now has no elongation to keep.
+    auto forget = [&]() {
+      if (TANGENTIAL && history) {
+        char &touched = history->touched(i)[jj];
+        if (touched) {
+          touched = 0;
+          double *h = history->values(i) + 3 * jj;
+          h[0] = h[1] = h[2] = 0.0;
         }
       }
-      const double *vi = v[i], *vj = v[j];
-      if (midpoint && model.exact) vi = midpoint->step_velocity(i), vj = midpoint->step_velocity(j);
-      const double dvx = vi[0] - vj[0];
-      const double dvy = vi[1] - vj[1];
-      const double dvz = vi[2] - vj[2];
+    };
 
-      lub::FilmRadius film;
-      double reach = 0.0;
-      if (WET && model.lubrication.active()) {
-        film = lub::film_radius_pair(radi, radius[j]);
-        reach = model.reach(film.value);
-      }
-      const double outer = radsum + reach;
-      if (rsq >= outer * outer) {
-        // Apart and out of the film: only a contact starting, or a film entered or left,
-        // within a step can act: gap < reach + |u_n| dt, i.e. rsq - |dv.del| dt < outer r
-        // (tested without a sqrt).
-        forget(jj);
-        if (!model.exact) continue;
-        const double s = rsq - std::fabs(dvx * delx + dvy * dely + dvz * delz) * dt;
-        if (s > 0.0 && s * s >= outer * outer * rsq) continue;
-      }
-      if (rsq == 0.0) {    // coincident centres: no normal direction is defined
-        forget(jj);
-        continue;
-      }
+    const double *vi = v[i], *vj = v[j];
+    if (midpoint && model.exact) vi = midpoint->step_velocity(i), vj = midpoint->step_velocity(j);
+    const double dvx = vi[0] - vj[0];
+    const double dvy = vi[1] - vj[1];
+    const double dvz = vi[2] - vj[2];
 
-      const double r = std::sqrt(rsq);
-      const double rinv = 1.0 / r;
-      const double u_n = (dvx * delx + dvy * dely + dvz * delz) * rinv;
-      const double m_e = lub::reduced_mass(rmass[i], rmass[j]);
-      const lub::NormalForce fn =
-          lub::normal_force(model, r - radsum, film, m_e, u_n, at_start);
-
-      const double fpair = fn.total() * rinv;
-      double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
-      if (TANGENTIAL) {
-        double ft[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0}, tj[3] = {0.0, 0.0, 0.0};
-        // The slip uses the engine's velocities (under the midpoint integrator: V~, not the
-        // step velocity of the normal contact).
-        const double del[3] = {delx, dely, delz};
-        double dv[3] = {dvx, dvy, dvz};
-        if (vi != v[i])
-          for (int d = 0; d < 3; d++) dv[d] = v[i][d] - v[j][d];
-        tangential(i, j, jj, del, dv, rinv, r - radsum, u_n, film.value, m_e, fn.contact, ft, ti, tj);
-        fx += ft[0], fy += ft[1], fz += ft[2];
-        double **torque = atom->torque;
-        txi += ti[0], tyi += ti[1], tzi += ti[2];
-        if (newton_pair || j < nlocal)
-          for (int d = 0; d < 3; d++) torque[j][d] += tj[d];
-      }
-      fxi += fx;
-      fyi += fy;
-      fzi += fz;
-      if (newton_pair || j < nlocal) {
-        f[j][0] -= fx;
-        f[j][1] -= fy;
-        f[j][2] -= fz;
-      }
-      if (evflag) {
-        if (TANGENTIAL)
-          ev_tally_xyz(i, j, nlocal, newton_pair, fn.energy, 0.0, fx, fy, fz, delx, dely, delz);
-        else
-          ev_tally(i, j, nlocal, newton_pair, fn.energy, 0.0, fpair, delx, dely, delz);
-      }
+    lub::FilmRadius film;
+    double reach = 0.0;
+    if (WET && model.lubrication.active()) {
+      film = lub::film_radius_pair(radi, radius[j]);
+      reach = model.reach(film.value);
     }
-    f[i][0] += fxi;
-    f[i][1] += fyi;
-    f[i][2] += fzi;
+    const double outer = radsum + reach;
+    if (rsq >= outer * outer) {
+      // Apart and out of the film: only a contact starting, or a film entered or left,
+      // within a step can act: gap < reach + |u_n| dt, i.e. rsq - |dv.del| dt < outer r
+      // (tested without a sqrt).
+      forget();
+      if (!model.exact) continue;
+      const double s = rsq - std::fabs(dvx * delx + dvy * dely + dvz * delz) * dt;
+      if (s > 0.0 && s * s >= outer * outer * rsq) continue;
+    }
+    if (rsq == 0.0) {    // coincident centres: no normal direction is defined
+      forget();
+      continue;
+    }
+
+    const double r = std::sqrt(rsq);
+    const double rinv = 1.0 / r;
+    const double u_n = (dvx * delx + dvy * dely + dvz * delz) * rinv;
+    const double m_e = lub::reduced_mass(rmass[i], rmass[j]);
+    const lub::NormalForce fn = lub::normal_force(model, r - radsum, film, m_e, u_n, at_start);
+
+    const double fpair = fn.total() * rinv;
+    double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
     if (TANGENTIAL) {
-      double **torque = atom->torque;
-      torque[i][0] += txi;
-      torque[i][1] += tyi;
-      torque[i][2] += tzi;
+      double ft[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0}, tj[3] = {0.0, 0.0, 0.0};
+      // The slip uses the engine's velocities (under the midpoint integrator: V~, not the
+      // step velocity of the normal contact).
+      const double del[3] = {delx, dely, delz};
+      double dv[3] = {dvx, dvy, dvz};
+      if (vi != v[i])
+        for (int d = 0; d < 3; d++) dv[d] = v[i][d] - v[j][d];
+      tangential(i, j, jj, del, dv, rinv, r - radsum, u_n, film.value, m_e, fn.contact, ft, ti, tj);
+      fx += ft[0], fy += ft[1], fz += ft[2];
+      for (int d = 0; d < 3; d++) torque[i][d] += ti[d];
+      if (newton_pair || j < nlocal)
+        for (int d = 0; d < 3; d++) torque[j][d] += tj[d];
+    }
+    f[i][0] += fx;
+    f[i][1] += fy;
+    f[i][2] += fz;
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= fx;
+      f[j][1] -= fy;
+      f[j][2] -= fz;
+    }
+    if (evflag) {
+      if (TANGENTIAL)
+        ev_tally_xyz(i, j, nlocal, newton_pair, fn.energy, 0.0, fx, fy, fz, delx, dely, delz);
+      else
+        ev_tally(i, j, nlocal, newton_pair, fn.energy, 0.0, fpair, delx, dely, delz);
     }
   }
 }
@@ -495,5 +504,6 @@ void PairLubricatedSpringDashpot::read_restart(FILE *fp)
 double PairLubricatedSpringDashpot::memory_usage()
 {
   return Pair::memory_usage() + coeffs.size() * sizeof(lub::Coefficients) +
-      models.size() * sizeof(lub::NormalModel);
+      models.size() * sizeof(lub::NormalModel) +
+      (candidate_i.capacity() + candidate_jj.capacity()) * sizeof(int);
 }

@@ -46,6 +46,7 @@ class PairLubricatedSpringDashpot : public Pair {
   class FixContactHistory *history = nullptr;    // tangential elongation per contact
   std::string history_id;
   class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
+  std::vector<int> candidate_i, candidate_jj;    // list entries kept by eval's first pass
 
   void allocate();
   int ntypes_alloc = 0;
