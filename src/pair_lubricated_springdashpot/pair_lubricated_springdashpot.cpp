@@ -290,6 +290,14 @@ inline void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const 
   tj[0] = -radj * nxf.x - roll.x, tj[1] = -radj * nxf.y - roll.y, tj[2] = -radj * nxf.z - roll.z;
 }
 
+// A pair outside distance `outer` (squared: outer_sq) comes within it during the coming step
+// at most if gap < reach + |u_n| dt, i.e. rsq - |dv.del| dt < outer r, tested without a sqrt.
+static inline bool within_a_step(double rsq, double dv_dot_del, double dt, double outer_sq)
+{
+  const double s = rsq - std::fabs(dv_dot_del) * dt;
+  return (s <= 0.0) | (s * s < outer_sq * rsq);
+}
+
 template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
 {
   double **x = atom->x;
@@ -315,8 +323,7 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
 
   // Pass 1, branch-free: keep the list entries that can act within the coming step: in the
   // film's reach (the largest of the two types) or in contact, or closing that gap within a
-  // step: gap < reach + |u_n| dt, i.e. rsq - |dv.del| dt < outer r, tested without a sqrt.
-  // With friction, entries holding an elongation to forget are kept too. Whether an entry
+  // step (within_a_step). With friction, entries holding an elongation to forget are kept too. Whether an entry
   // is kept follows no pattern a branch predictor could learn, hence no branch.
   int ncandidate = 0;
   for (int ii = 0; ii < inum; ii++) {
@@ -342,12 +349,11 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double outer = radi + radius[j] + (WET ? reach_row[type[j]] : 0.0);
       const double *vj = midpoint ? midpoint->step_velocity(j) : v[j];
-      const double s = rsq - std::fabs((vxi - vj[0]) * delx + (vyi - vj[1]) * dely +
-                                       (vzi - vj[2]) * delz) * dt;
+      const double dv_dot_del = (vxi - vj[0]) * delx + (vyi - vj[1]) * dely + (vzi - vj[2]) * delz;
       const double outer_sq = outer * outer;
       out_i[ncandidate] = i;
       out_jj[ncandidate] = jj;
-      int keep = (rsq < outer_sq) | (s <= 0.0) | (s * s < outer_sq * rsq);
+      int keep = (rsq < outer_sq) | within_a_step(rsq, dv_dot_del, dt, outer_sq);
       if (TANGENTIAL && touched) keep |= touched[jj];
       ncandidate += keep;
     }
@@ -391,13 +397,11 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
     }
     const double outer = radsum + reach;
     if (rsq >= outer * outer) {
-      // Apart and out of the film: only a contact starting, or a film entered or left,
-      // within a step can act: gap < reach + |u_n| dt, i.e. rsq - |dv.del| dt < outer r
-      // (tested without a sqrt).
+      // Apart and out of this pair's film (pass 1 used the types' largest): only a contact
+      // starting, or a film entered or left, within a step can act.
       forget();
       if (!model.exact) continue;
-      const double s = rsq - std::fabs(dvx * delx + dvy * dely + dvz * delz) * dt;
-      if (s > 0.0 && s * s >= outer * outer * rsq) continue;
+      if (!within_a_step(rsq, dvx * delx + dvy * dely + dvz * delz, dt, outer * outer)) continue;
     }
     if (rsq == 0.0) {    // coincident centres: no normal direction is defined
       forget();
