@@ -173,13 +173,10 @@ def summary(rows, map_rows):
     lines += ["", "## Recommended settings", "",
               "- `integration exact` (the default), with `fix nve/sphere` or the paper's "
               "`fix nve/sphere/midpoint`: the dry restitution is e_d to round-off for every N_c >= 1 "
-              "and impact phase; the film can stop but never reverse a relative motion. With "
-              "`fix nve/sphere` no setting of the stability map is unstable; under "
-              "`fix nve/sphere/midpoint` see the list above (the map's spheres start the run inside "
-              "the saturated film, and one such start, St = 1e4 at dt = 0.1 R/U, rebounds 0.3 % "
-              "faster than e_d: the scheme's first half-step drift X~ = X + dt/2 V ignores forces, so "
-              "a contact that begins within it is seen deeper than it is and the exact contact "
-              "infers a faster impact; only the first step of a run, bounded by that drift).",
+              "and impact phase; the film can stop but never reverse a relative motion, and no "
+              "setting of the stability map is unstable (the map's spheres start the run inside "
+              "the saturated film; the midpoint scheme's first drift X~ = X + dt/2 V + dt^2/8 F/m "
+              "is placed on the collision's trajectory, doc/fix_nve_sphere_midpoint.rst).",
               "- Wet: give the contact a fixed duration, `tcontact` = 0.04 R/U (U the typical impact "
               "speed), with any dt such that N_c = t_c/dt >= 4; the overlap reached then no longer "
               "scales with dt, and e/e_d stays within 0.05 of exp(-35/St) for St in [50, 1000]. Below "

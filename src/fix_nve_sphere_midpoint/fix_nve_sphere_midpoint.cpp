@@ -8,7 +8,10 @@
 
    Angular velocities follow the same scheme with I = 2/5 m r^2. The last form of the
    position update needs no copy of X^n, so periodic remapping between the two halves of
-   the step is harmless. The first step after the fix is created uses V^(n-1) = V^n.
+   the step is harmless. An atom's first step (after the fix or the atom is created) uses
+   V^(n-1) = V^n and, when it follows a run set-up, the set-up forces F^0 for a second-order
+   first drift X~ = X^0 + dt/2 V^0 + dt^2/8 F^0 / m: the step-exact contact then places X~
+   on the collision's trajectory (contact_step.h).
 ------------------------------------------------------------------------- */
 
 #include "fix_nve_sphere_midpoint.h"
@@ -35,6 +38,7 @@ FixNVESphereMidpoint::FixNVESphereMidpoint(LAMMPS *lmp, int narg, char **arg) :
 
   time_integrate = 1;
   restart_peratom = 1;
+  create_attribute = 1;
   maxexchange = NVALUES;
   comm_forward = 3;
 
@@ -107,10 +111,14 @@ void FixNVESphereMidpoint::initial_integrate(int /*vflag*/)
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
   const double half_dt = 0.5 * dt;
+  double **f = atom->f;
+  const double *rmass = atom->rmass;
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     double *s = state[i];
+    if (s[FIRST_STEP] != 0.0)    // f holds the set-up forces of this run
+      for (int d = 0; d < 3; d++) x[i][d] += 0.125 * dt * dt * f[i][d] / rmass[i];
     for (int d = 0; d < 3; d++) {
       s[6 + d] = v[i][d];
       s[9 + d] = omega[i][d];
@@ -143,6 +151,7 @@ void FixNVESphereMidpoint::final_integrate()
       s[3 + d] = s[9 + d];
       omega[i][d] = s[9 + d] + dt_over_inertia * torque[i][d];
     }
+    s[FIRST_STEP] = 0.0;
   }
 }
 
@@ -161,13 +170,15 @@ void FixNVESphereMidpoint::copy_arrays(int i, int j, int /*delflag*/)
   memcpy(state[j], state[i], NVALUES * sizeof(double));
 }
 
-// New atoms (create_atoms, fix pour, ...) start with V^(n-1) = V^n.
+// New atoms (create_atoms, fix pour, ...) start with V^(n-1) = V^n. Those created within a
+// step (fix pour) have had no set-up forces: final_integrate clears the flag first.
 void FixNVESphereMidpoint::set_arrays(int i)
 {
   for (int d = 0; d < 3; d++) {
     state[i][d] = state[i][6 + d] = atom->v[i][d];
     state[i][3 + d] = state[i][9 + d] = atom->omega[i][d];
   }
+  state[i][FIRST_STEP] = 1.0;
 }
 
 int FixNVESphereMidpoint::pack_exchange(int i, double *buf)
@@ -182,13 +193,14 @@ int FixNVESphereMidpoint::unpack_exchange(int nlocal, double *buf)
   return NVALUES;
 }
 
-// Restart files hold V^(n-1) and omega^(n-1): written between steps, that is all the
-// scheme needs to continue exactly.
+// Restart files hold V^(n-1), omega^(n-1) and the first-step flag: written between steps,
+// that is all the scheme needs to continue exactly.
 int FixNVESphereMidpoint::pack_restart(int i, double *buf)
 {
-  buf[0] = 7;
+  buf[0] = RESTART_SIZE;
   for (int k = 0; k < 6; k++) buf[1 + k] = state[i][k];
-  return 7;
+  buf[7] = state[i][FIRST_STEP];
+  return RESTART_SIZE;
 }
 
 void FixNVESphereMidpoint::unpack_restart(int nlocal, int nth)
@@ -196,16 +208,17 @@ void FixNVESphereMidpoint::unpack_restart(int nlocal, int nth)
   double **extra = atom->extra;
   int m = 0;
   for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
+  const int count = static_cast<int>(extra[nlocal][m++]);
   for (int k = 0; k < 6; k++) state[nlocal][k] = extra[nlocal][m++];
+  state[nlocal][FIRST_STEP] = count > 7 ? extra[nlocal][m] : 0.0;    // older files: 7 values
 }
 
 int FixNVESphereMidpoint::size_restart(int /*nlocal*/)
 {
-  return 7;
+  return RESTART_SIZE;
 }
 
 int FixNVESphereMidpoint::maxsize_restart()
 {
-  return 7;
+  return RESTART_SIZE;
 }

@@ -45,8 +45,9 @@ class FixNVESphereMidpoint : public Fix {
   const double *step_velocity(int i) const { return state[i] + 6; }
 
  protected:
-  // Per atom: 0-2 V^(n-1), 3-5 omega^(n-1) between steps; 6-8 V^n, 9-11 omega^n within one.
-  static constexpr int NVALUES = 12;
+  // Per atom: 0-2 V^(n-1), 3-5 omega^(n-1) between steps; 6-8 V^n, 9-11 omega^n within one;
+  // 12 non-zero until the atom's first step is done. Restart: a count, 0-5, 12.
+  static constexpr int FIRST_STEP = 12, NVALUES = 13, RESTART_SIZE = 8;
   double **state = nullptr;
   double dt = 0.0;
 };

@@ -150,7 +150,9 @@ void FixWallLubrication::post_force(int /*vflag*/)
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-  const bool at_start = update->setupflag != 0 && !midpoint;    // see contact_step.h
+  const lub::Evaluation when = !update->setupflag ? lub::Evaluation::step    // see contact_step.h
+      : midpoint                                  ? lub::Evaluation::midpoint_start
+                                                  : lub::Evaluation::verlet_start;
   const bool tangential_on = tmodel.active();
 
   for (double &s : local_sums) s = 0.0;
@@ -171,7 +173,7 @@ void FixWallLubrication::post_force(int /*vflag*/)
             history[i][(side == 1 ? 0 : HISTORY_PER_WALL) + k] = 0.0;
         continue;
       }
-      const lub::NormalForce fn = lub::normal_force(model, gap, r, rmass[i], u_n, at_start);
+      const lub::NormalForce fn = lub::normal_force(model, gap, r, rmass[i], u_n, when);
       const double force = side * fn.total();
       f[i][axis] += force;
       local_sums[0] += fn.energy;

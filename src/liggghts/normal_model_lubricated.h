@@ -93,8 +93,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
                                    : lubricated::lubrication_radius_pair(sidata.radi, sidata.radj);
     if (!update->setupflag && gap - u_n * dt_ >= (neighbor->contactDistanceFactor - 1.0) * sidata.radsum)
       missed_approach(u_n);    // entered from beyond the close range: no step before was seen
-    const lubricated::NormalForce fn =
-        lubricated::normal_force(model, gap, radius, m_e, u_n, update->setupflag != 0);
+    const lubricated::NormalForce fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation());
 
     // Tangential and rolling models of LIGGGHTS read these: the solid contact force for the
     // Coulomb limit, and a tangential spring-dashpot with the normal period and restitution
@@ -126,8 +125,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     if (!model.acts(gap, radius, u_n)) return;
     const double m_i = atom->rmass[scdata.i];
     const double m_e = is_wall_ ? m_i : lubricated::reduced_mass(m_i, atom->rmass[scdata.j]);
-    const lubricated::NormalForce fn =
-        lubricated::normal_force(model, gap, radius, m_e, u_n, update->setupflag != 0);
+    const lubricated::NormalForce fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation());
     if (fn.total() == 0.0) return;
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
     apply(fn.total() * (is_wall_ ? scdata.area_ratio : 1.0), en, i_forces, j_forces);
@@ -135,6 +133,12 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   }
 
  private:
+  // LIGGGHTS integrates with velocity Verlet (fix nve/sphere).
+  lubricated::Evaluation evaluation() const
+  {
+    return update->setupflag ? lubricated::Evaluation::verlet_start : lubricated::Evaluation::step;
+  }
+
   // LIGGGHTS's Error::all throws with a pointer to the text, printed after the pair style (and
   // this model) are gone: the text must outlive them.
   void fail(const std::string &message)

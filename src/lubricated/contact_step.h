@@ -275,6 +275,51 @@ __attribute__((noinline)) inline double contact_acceleration_at_start(const Cont
   return 2.0 * ((g1 - g) / dt - v) / dt;
 }
 
+namespace detail {
+
+// For a contact under way at a midpoint start (below): the time tau near dt/2 at which the
+// oscillator through (g, v) at time 0 has moved v dt over the step before, so that its points
+// at tau - dt and tau are a leapfrog pair with velocity v. Newton from dt/2; returns dt/2
+// (a second-order placement) where the pair would leave the overlap or Newton stalls.
+inline double midpoint_start_time(const ContactStep &cs, double g, double v)
+{
+  const double dt = cs.dt, a = cs.decay_rate, w = cs.omega;
+  const double A = g, B = (v + a * g) / w;    // g(t) = exp(-a t) (A cos wt + B sin wt)
+  auto gap = [&](double t) { return std::exp(-a * t) * (A * std::cos(w * t) + B * std::sin(w * t)); };
+  auto rate = [&](double t) {
+    return std::exp(-a * t) * ((B * w - a * A) * std::cos(w * t) - (A * w + a * B) * std::sin(w * t));
+  };
+  double tau = 0.5 * dt;
+  for (int it = 0; it < 8; ++it) {
+    const double mismatch = gap(tau) - gap(tau - dt) - v * dt, slope = rate(tau) - rate(tau - dt);
+    if (!(std::fabs(slope) > 0.0)) return 0.5 * dt;
+    tau -= mismatch / slope;
+    if (!(tau > 0.0 && tau < dt)) return 0.5 * dt;
+    if (std::fabs(mismatch) <= 1e-13 * std::fabs(v * dt) + 1e-300) break;
+  }
+  return gap(tau) < 0.0 && gap(tau - dt) < 0.0 ? tau : 0.5 * dt;
+}
+
+}    // namespace detail
+
+// The same at the start of a run under fix nve/sphere/midpoint. Its first step evaluates
+// forces at X~ = X + dt/2 V + dt^2/8 A, A the set-up acceleration (a second-order start), and
+// from then on takes X~ - dt V^n as the point a step before it (the leapfrog above). Both
+// points must lie on one exact trajectory of the collision, which may run up to half a step
+// early or late. A contact that would begin within the half step is therefore met where it
+// begins: X~ stops at contact, and free flight before it is exact (a drift into the overlap
+// would be read as a faster impact). A contact already under way is met where the oscillator
+// has moved v dt over the step before (detail::midpoint_start_time). g: gap at X; v: normal
+// velocity; drifted: where the rest of the set-up forces (the film) put X~. Returns A.
+__attribute__((noinline)) inline double contact_acceleration_at_midpoint_start(const ContactStep &cs, double g,
+                                                                               double v, double drifted)
+{
+  const double dt = cs.dt;
+  const double target = g >= 0.0 ? std::max(drifted, 0.0)
+      : drifted + propagate_contact(cs, g, v, detail::midpoint_start_time(cs, g, v)) - (g + 0.5 * v * dt);
+  return 8.0 * (target - drifted) / (dt * dt);
+}
+
 // Whether contact_acceleration can be non-zero: in overlap, or within a step of it.
 inline bool contact_possible(double g1, double u, double dt)
 {

@@ -108,13 +108,18 @@ struct NormalForce {
   double total() const { return contact + lubrication; }
 };
 
-// at_start: the first force evaluation of a run (velocities are full-step there).
+// Which force evaluation: a step, or the set-up of a run, where velocities are full-step and
+// the integrator applies them in its own way: velocity Verlet half a kick before the first
+// drift, fix nve/sphere/midpoint a shift dt^2/8 F/m of its first half-step drift.
+enum class Evaluation { step, verlet_start, midpoint_start };
+
 // radius: the film's R (lubrication.h) with its inverse.
 __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel &m, double gap,
                                                               const FilmRadius &radius,
                                                               double reduced_mass, double u_n,
-                                                              bool at_start = false)
+                                                              Evaluation when = Evaluation::step)
 {
+  const bool at_start = when != Evaluation::step;
   NormalForce f;
   if (gap < 0.0) {
     const double overlap = -gap;
@@ -133,8 +138,11 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
       f.lubrication = std::max(-limit, std::min(limit, impulse)) * m.step.inv_dt;
     } else {
       f.lubrication = -m.lubrication.damping(gap * radius.inverse, radius.value) * u_n;
-      // At a run start only half a kick follows: it may stop the motion, not reverse it.
-      if (m.exact) f.lubrication = std::max(-2.0 * limit / dt, std::min(2.0 * limit / dt, f.lubrication));
+      // At a run start it may stop the motion over the half kick (dt/2 F/m) or the half drift
+      // (dt^2/8 F/m against dt/2 u_n), not reverse it.
+      const double cap = when == Evaluation::midpoint_start ? 4.0 * limit / dt : 2.0 * limit / dt;
+      if (m.exact || when == Evaluation::midpoint_start)
+        f.lubrication = std::max(-cap, std::min(cap, f.lubrication));
     }
   }
   if (m.exact && contact_possible(gap, u_n, m.step.dt)) {
@@ -152,7 +160,10 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
       const EntryLoss *entry = nullptr;
       if (m.calibrated() && before >= 0.0)
         loss = entry_loss(m, radius, reduced_mass, gap >= 0.0 ? gap : g0), entry = &loss;
-      if (at_start) {
+      if (when == Evaluation::midpoint_start) {
+        const double drifted = gap + 0.5 * u_n * cs.dt + 0.125 * cs.dt * cs.dt * f.lubrication / reduced_mass;
+        f.contact = reduced_mass * contact_acceleration_at_midpoint_start(cs, gap, u_n, drifted);
+      } else if (at_start) {
         f.contact = reduced_mass * contact_acceleration_at_start(cs, gap, u_n, entry);
       } else {
         const double kick = g0 >= 0.0 ? f.lubrication * cs.dt / reduced_mass : 0.0;
@@ -164,9 +175,9 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
 }
 
 inline NormalForce normal_force(const NormalModel &m, double gap, double radius,
-                                double reduced_mass, double u_n, bool at_start = false)
+                                double reduced_mass, double u_n, Evaluation when = Evaluation::step)
 {
-  return normal_force(m, gap, FilmRadius(radius), reduced_mass, u_n, at_start);
+  return normal_force(m, gap, FilmRadius(radius), reduced_mass, u_n, when);
 }
 
 inline double reduced_mass(double m_i, double m_j)

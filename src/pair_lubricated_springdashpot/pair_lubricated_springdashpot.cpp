@@ -309,9 +309,10 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   const double dt = update->dt;
-  // Full-step velocities and half a kick at a run start (contact_step.h); the midpoint
-  // integrator discards the set-up forces, so it needs no such treatment.
-  const bool at_start = update->setupflag != 0 && !midpoint;
+  // Full-step velocities at a run start, used by each integrator its own way (contact_step.h).
+  const lub::Evaluation when = !update->setupflag ? lub::Evaluation::step
+      : midpoint                                  ? lub::Evaluation::midpoint_start
+                                                  : lub::Evaluation::verlet_start;
 
   const int inum = list->inum;
   const int *ilist = list->ilist;
@@ -412,7 +413,7 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
     const double rinv = 1.0 / r;
     const double u_n = (dvx * delx + dvy * dely + dvz * delz) * rinv;
     const double m_e = lub::reduced_mass(rmass[i], rmass[j]);
-    const lub::NormalForce fn = lub::normal_force(model, r - radsum, film, m_e, u_n, at_start);
+    const lub::NormalForce fn = lub::normal_force(model, r - radsum, film, m_e, u_n, when);
 
     const double fpair = fn.total() * rinv;
     double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;

@@ -116,11 +116,34 @@ print "RESULT state $(x[1]:%.10g) $(x[3]:%.10g) $(vx[3]:%.10g) $(ke:%.10g)"
     assert all(math.isfinite(v) for v in result["state"])
 
 
-def test_sphere_starting_inside_a_wall(lmp):
+@pytest.mark.parametrize("integrator", ["nve/sphere", "nve/sphere/midpoint"])
+def test_sphere_starting_inside_a_wall(lmp, integrator):
     """Released from an overlap of R/2 at rest: pushed out, no faster than the spring's energy."""
     t_c = 8 * 0.005 * R / U
-    script = scenes.wall_bounce(0.9, dt_ru=0.005, gap0=-0.5, steps=40).replace(
+    script = scenes.wall_bounce(0.9, dt_ru=0.005, gap0=-0.5, steps=40, integrator=integrator).replace(
         f"velocity all set 0 0 {-U}", "velocity all set 0 0 0")
     vz = lmp(script)["e"] * U
     v_max = 0.5 * R * math.sqrt(math.pi ** 2 + math.log(0.9) ** 2) / t_c
     assert 0.0 < vz <= v_max * (1 + 1e-9)
+
+
+@pytest.mark.parametrize("scene", ["wall", "pair"])
+@pytest.mark.parametrize("integrator", ["nve/sphere", "nve/sphere/midpoint"])
+@pytest.mark.parametrize("gap0", [0.005, 0.03])
+def test_contact_starting_within_the_first_step(lmp, scene, integrator, gap0):
+    """The run starts u dt = 0.1 R from contact: the contact begins within the first step,
+    within the midpoint scheme's first half-step drift X~ = X + dt/2 V. Exact dry rebound
+    (the start places X~ on the collision's trajectory; contact_step.h)."""
+    build = scenes.wall_bounce if scene == "wall" else scenes.pair_bounce
+    result = lmp(build(0.9, dt_ru=0.1, gap0=gap0, integrator=integrator))
+    assert result["e"] == pytest.approx(0.9, rel=1e-9)
+
+
+@pytest.mark.parametrize("integrator", ["nve/sphere", "nve/sphere/midpoint"])
+def test_start_in_the_saturated_film_gains_no_energy(lmp, integrator):
+    """The stability map's hardest start: inside the saturated film (gap 5e-4 R), St = 1e4,
+    dt = 0.1 R/U: the film removes O(1/St) of the speed (about 35/St in and out, the Legendre
+    law), so the rebound stays below e_d and above e_d (1 - 100/St)."""
+    result = lmp(scenes.wall_bounce(0.9, dt_ru=0.1, gap0=5e-4, integrator=integrator,
+                                    mu=scenes.viscosity_for_stokes(1e4)))
+    assert 0.9 * (1 - 100 / 1e4) < result["e"] < 0.9
