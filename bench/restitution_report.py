@@ -163,6 +163,18 @@ def summary(rows, map_rows):
                              + (f"{best['error']:.2e} | {best['ncontact']}, {best['dt_ru']} | " if best else "- | - | ")
                              + (f"{max(n8):.2e} |" if n8 else "- |")
                              + (f" {max(st20):.2e} |" if st20 else " - |"))
+    ncs = sorted({r["ncontact"] for r in rows})
+    lines += ["", "Dry restitution by contact resolution: worst |e - e_d| / e_d over the time steps "
+              "and both scenes (unstable: settings where the rebound blew up or exceeded e_d).", "",
+              "| scheme | " + " | ".join(f"N_c = {n}" for n in ncs) + " |", "|---|" + "---|" * len(ncs)]
+    for scheme in SCHEMES:
+        cells = []
+        for n in ncs:
+            sel = [r for r in rows if (r["scheme"], r["fluid"], r["ncontact"]) == (scheme, "dry", n)]
+            bad = sum(not r["stable"] for r in sel)
+            worst = max((r["error"] for r in sel if r["stable"]), default=float("nan"))
+            cells.append(f"{worst:.1e}" + (f" ({bad} unstable)" if bad else ""))
+        lines.append(f"| {scheme} | " + " | ".join(cells) + " |")
     lines += ["", "Stability (particle-wall starting inside the saturated film, N_c = 8; stable = "
               "finite and no faster than e_d times the impact speed):", ""]
     for scheme in SCHEMES:
