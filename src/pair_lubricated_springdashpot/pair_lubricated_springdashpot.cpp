@@ -322,17 +322,25 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
   const double *reach_table = max_reach.data();
   const int stride = ntypes_alloc + 1;
 
+  // How far each owned or ghost atom can move in the coming step (|v|_1 dt >= |v| dt): the
+  // pairs that can close their gap within it are within the sum of both.
+  const int nall = atom->nlocal + atom->nghost;
+  if (static_cast<int>(step_reach.size()) < nall) step_reach.resize(atom->nmax);
+  for (int k = 0; k < nall; k++) {
+    const double *vk = midpoint ? midpoint->step_velocity(k) : v[k];
+    step_reach[k] = (std::fabs(vk[0]) + std::fabs(vk[1]) + std::fabs(vk[2])) * dt;
+  }
+  const double *moves = step_reach.data();
+
   // Pass 1, branch-free: keep the list entries that can act within the coming step: in the
-  // film's reach (the largest of the two types) or in contact, or closing that gap within a
-  // step (within_a_step). With friction, entries holding an elongation to forget are kept too. Whether an entry
-  // is kept follows no pattern a branch predictor could learn, hence no branch.
+  // film's reach (the largest of the two types) or in contact, or within what both atoms
+  // can move in a step. With friction, entries holding an elongation to forget are kept too.
+  // Whether an entry is kept follows no pattern a branch predictor could learn, hence no branch.
   int ncandidate = 0;
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
-    const double *vi = midpoint ? midpoint->step_velocity(i) : v[i];
-    const double vxi = vi[0], vyi = vi[1], vzi = vi[2];
-    const double radi = radius[i];
+    const double radi_moved = radius[i] + moves[i];
     const double *reach_row = reach_table + type[i] * stride;
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
@@ -348,13 +356,10 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
       const double dely = yi - x[j][1];
       const double delz = zi - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
-      const double outer = radi + radius[j] + (WET ? reach_row[type[j]] : 0.0);
-      const double *vj = midpoint ? midpoint->step_velocity(j) : v[j];
-      const double dv_dot_del = (vxi - vj[0]) * delx + (vyi - vj[1]) * dely + (vzi - vj[2]) * delz;
-      const double outer_sq = outer * outer;
+      const double near = radi_moved + radius[j] + moves[j] + (WET ? reach_row[type[j]] : 0.0);
       out_i[ncandidate] = i;
       out_jj[ncandidate] = jj;
-      int keep = (rsq < outer_sq) | within_a_step(rsq, dv_dot_del, dt, outer_sq);
+      int keep = rsq < near * near;
       if (TANGENTIAL && touched) keep |= touched[jj];
       ncandidate += keep;
     }
@@ -510,5 +515,5 @@ double PairLubricatedSpringDashpot::memory_usage()
 {
   return Pair::memory_usage() + coeffs.size() * sizeof(lub::Coefficients) +
       models.size() * sizeof(lub::NormalModel) +
-      (candidate_i.capacity() + candidate_jj.capacity()) * sizeof(int);
+      (candidate_i.capacity() + candidate_jj.capacity()) * sizeof(int) + step_reach.capacity() * sizeof(double);
 }

@@ -47,6 +47,7 @@ class PairLubricatedSpringDashpot : public Pair {
   std::string history_id;
   class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
   std::vector<int> candidate_i, candidate_jj;    // list entries kept by eval's first pass
+  std::vector<double> step_reach;                // per atom: bound on its move in one step
 
   void allocate();
   int ntypes_alloc = 0;
