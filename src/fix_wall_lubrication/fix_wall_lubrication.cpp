@@ -150,9 +150,7 @@ void FixWallLubrication::post_force(int /*vflag*/)
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-  const lub::Evaluation when = !update->setupflag ? lub::Evaluation::step    // see contact_step.h
-      : midpoint                                  ? lub::Evaluation::midpoint_start
-                                                  : lub::Evaluation::verlet_start;
+  const lub::Evaluation when = lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
   const bool tangential_on = tmodel.active();
 
   for (double &s : local_sums) s = 0.0;

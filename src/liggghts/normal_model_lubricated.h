@@ -134,10 +134,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
 
  private:
   // LIGGGHTS integrates with velocity Verlet (fix nve/sphere).
-  lubricated::Evaluation evaluation() const
-  {
-    return update->setupflag ? lubricated::Evaluation::verlet_start : lubricated::Evaluation::step;
-  }
+  lubricated::Evaluation evaluation() const { return lubricated::evaluation_of(update->setupflag != 0, false); }
 
   // LIGGGHTS's Error::all throws with a pointer to the text, printed after the pair style (and
   // this model) are gone: the text must outlive them.

@@ -113,6 +113,11 @@ struct NormalForce {
 // drift, fix nve/sphere/midpoint a shift dt^2/8 F/m of its first half-step drift.
 enum class Evaluation { step, verlet_start, midpoint_start };
 
+inline Evaluation evaluation_of(bool setup, bool midpoint_integrator)
+{
+  return !setup ? Evaluation::step : midpoint_integrator ? Evaluation::midpoint_start : Evaluation::verlet_start;
+}
+
 // radius: the film's R (lubrication.h) with its inverse.
 __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel &m, double gap,
                                                               const FilmRadius &radius,

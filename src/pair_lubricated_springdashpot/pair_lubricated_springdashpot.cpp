@@ -310,9 +310,7 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
   const int newton_pair = force->newton_pair;
   const double dt = update->dt;
   // Full-step velocities at a run start, used by each integrator its own way (contact_step.h).
-  const lub::Evaluation when = !update->setupflag ? lub::Evaluation::step
-      : midpoint                                  ? lub::Evaluation::midpoint_start
-                                                  : lub::Evaluation::verlet_start;
+  const lub::Evaluation when = lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
 
   const int inum = list->inum;
   const int *ilist = list->ilist;
