@@ -29,8 +29,8 @@ breakdown), dangerous neighbor builds, and physics checks on the final state of 
 (deepest wall overlap, spheres sunk into the floor, deepest sphere-sphere overlap, bed top,
 contacts per sphere, fastest sphere). Logs, data files and runs.csv (every timed run) stay in
 --out (wiped at the start);
-the table goes to stdout, to OUT/RESULTS.md and to --results (bench/RESULTS.md by default;
-'none' to skip). Targets (from the issue): plugin dry <= 1.0 x gran/hooke, wet <= 1.3 x.
+the table goes to stdout, to OUT/RESULTS.md and to --results (bench/RESULTS.md by default,
+bench/RESULTS_FRICTION.md with --friction; 'none' to skip). Targets (from the issue): plugin dry <= 1.0 x gran/hooke, wet <= 1.3 x.
 """
 import argparse
 import datetime
@@ -265,9 +265,12 @@ def main():
     parser.add_argument("--friction", action="store_true",
                         help="time the plugin with friction against gran/hooke/history (issue 4)")
     parser.add_argument("--out", default=str(ROOT / "build" / "bench"))
-    parser.add_argument("--results", default=str(ROOT / "bench" / "RESULTS.md"),
-                        help="markdown file for the results besides OUT/RESULTS.md ('none' to skip)")
+    parser.add_argument("--results", default=None,
+                        help="markdown file for the results besides OUT/RESULTS.md ('none' to skip; "
+                             "default bench/RESULTS.md, bench/RESULTS_FRICTION.md with --friction)")
     args = parser.parse_args()
+    if args.results is None:
+        args.results = str(ROOT / "bench" / ("RESULTS_FRICTION.md" if args.friction else "RESULTS.md"))
     global FRICTION
     FRICTION = args.friction
     if not 0 < args.settling_at < args.settled_at:

@@ -157,7 +157,11 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
     if (!at_start && gap < 0.0 && g0 < 0.0 && g2 < 0.0)    // sustained contact, inline:
       // (g2 - 2 gap + g0) / dt^2 of the recurrence, as a spring-dashpot (contact_step.h)
       f.contact = -reduced_mass * (cs.stiffness_step * gap + cs.damping_step * u_n);
-    else {
+    else if (when == Evaluation::midpoint_start) {
+      // Only places the first drift (the contact and its entry loss act from the next step).
+      const double drifted = gap + 0.5 * u_n * cs.dt + 0.125 * cs.dt * cs.dt * f.lubrication / reduced_mass;
+      f.contact = reduced_mass * contact_acceleration_at_midpoint_start(cs, gap, u_n, drifted);
+    } else {
       // Where a contact may start, it follows the motion after the film's kick of this step
       // (a film that stops the pair leaves no contact), with the calibrated entry loss.
       const double before = at_start ? gap : g0;
@@ -165,10 +169,7 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
       const EntryLoss *entry = nullptr;
       if (m.calibrated() && before >= 0.0)
         loss = entry_loss(m, radius, reduced_mass, gap >= 0.0 ? gap : g0), entry = &loss;
-      if (when == Evaluation::midpoint_start) {
-        const double drifted = gap + 0.5 * u_n * cs.dt + 0.125 * cs.dt * cs.dt * f.lubrication / reduced_mass;
-        f.contact = reduced_mass * contact_acceleration_at_midpoint_start(cs, gap, u_n, drifted);
-      } else if (at_start) {
+      if (at_start) {
         f.contact = reduced_mass * contact_acceleration_at_start(cs, gap, u_n, entry);
       } else {
         const double kick = g0 >= 0.0 ? f.lubrication * cs.dt / reduced_mass : 0.0;
