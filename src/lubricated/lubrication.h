@@ -106,15 +106,16 @@ struct Lubrication {
   // Breugem's rule with a grid: the film starts at a gap of 0.75 dx (MODEL.md section 1).
   static constexpr double grid_activation = 0.75;
 
-  // Activation distance in units of R for a contact of lubrication radius R.
+  // Activation distance in units of R for a contact of lubrication radius R. With a grid, a
+  // contact so large that 0.75 dx / R falls below eps_1 gets eps_al = eps_1, that is no film:
+  // lambda(eps_1) - lambda(eps_al) < 0 would make a film that pulls the surfaces together
+  // (a fixed eps_al must exceed eps_1, coefficients.h).
   double activation_for(const FilmRadius &radius) const
   {
-    return grid_spacing > 0.0 ? grid_activation * grid_spacing * radius.inverse : eps_activation;
+    return grid_spacing > 0.0 ? std::max(grid_activation * grid_spacing * radius.inverse, eps_saturation)
+                              : eps_activation;
   }
-  double activation_for(double radius) const
-  {
-    return grid_spacing > 0.0 ? grid_activation * grid_spacing / radius : eps_activation;
-  }
+  double activation_for(double radius) const { return activation_for(FilmRadius(radius)); }
 
   // Film integral P(eps) = int_eps^inf [c_l(s) / (6 pi mu R)] ds over the zones above:
   // 0 beyond eps_al, growing towards contact, constant below eps_2. The impulse of the film

@@ -136,6 +136,21 @@ TEST_P(Film, ImpulseOfAPassTelescopesWhateverTheSteps)
   EXPECT_LT(lub.impulse(end, start, R), 0.0);    // separating: held back
 }
 
+TEST_P(Film, GridSpacingBelowSaturationGivesNoFilm)
+{
+  // 0.75 dx / R = 5e-4 < eps_1 = 1e-3: lambda(eps_1) - lambda(eps_al) would be negative, a film
+  // pulling the surfaces together on approach; the contact gets no film instead.
+  const double R = 1.5e-3, dx = 1e-6;
+  const Lubrication lub = make_lubrication(GetParam(), 1e-3, 0.0, dx, 1e-3, -1e-2);
+  EXPECT_EQ(lub.activation_for(R), 1e-3);
+  for (double eps : {2e-3, 1e-3, 7e-4, 1e-4, 0.0, -5e-3}) {
+    EXPECT_EQ(lub.damping(eps, R), 0.0) << "eps " << eps;
+    EXPECT_EQ(lub.impulse((eps + 1e-4) * R, eps * R, R), 0.0) << "eps " << eps;
+  }
+  // A smaller contact of the same scene still has its film.
+  EXPECT_GT(lub.damping(0.5 * 0.75 * dx / 1e-4, 1e-4), 0.0);
+}
+
 TEST_P(Film, GridSpacingGivesTheSameImpulseAsItsActivationGap)
 {
   // dx with 0.75 dx / R = 0.1: the per-contact path (and its saturated shortcut) must agree
