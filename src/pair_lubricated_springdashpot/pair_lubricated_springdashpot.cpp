@@ -345,9 +345,10 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
     const char *touched = TANGENTIAL && history ? history->touched(i) : nullptr;
     if (ncandidate + jnum > static_cast<int>(candidate_i.size())) {
       candidate_i.resize(2 * (ncandidate + jnum));
-      candidate_jj.resize(2 * (ncandidate + jnum));
+      candidate_j.resize(2 * (ncandidate + jnum));
+      if (TANGENTIAL) candidate_jj.resize(2 * (ncandidate + jnum));
     }
-    int *out_i = candidate_i.data(), *out_jj = candidate_jj.data();
+    int *out_i = candidate_i.data(), *out_j = candidate_j.data(), *out_jj = candidate_jj.data();
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double delx = xi - x[j][0];
@@ -356,7 +357,8 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double near = radi_moved + radius[j] + moves[j] + (WET ? reach_row[type[j]] : 0.0);
       out_i[ncandidate] = i;
-      out_jj[ncandidate] = jj;
+      out_j[ncandidate] = j;
+      if (TANGENTIAL) out_jj[ncandidate] = jj;
       int keep = rsq < near * near;
       if (TANGENTIAL && touched) keep |= touched[jj];
       ncandidate += keep;
@@ -366,8 +368,8 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
   // Pass 2 over the kept entries only.
   double **torque = atom->torque;
   for (int c = 0; c < ncandidate; c++) {
-    const int i = candidate_i[c], jj = candidate_jj[c];
-    const int j = firstneigh[i][jj] & NEIGHMASK;
+    // j kept by pass 1 (no second look-up in the neighbor list); jj for the history only.
+    const int i = candidate_i[c], j = candidate_j[c], jj = TANGENTIAL ? candidate_jj[c] : 0;
     const double delx = x[i][0] - x[j][0];
     const double dely = x[i][1] - x[j][1];
     const double delz = x[i][2] - x[j][2];
@@ -513,5 +515,5 @@ double PairLubricatedSpringDashpot::memory_usage()
 {
   return Pair::memory_usage() + coeffs.size() * sizeof(lub::Coefficients) +
       models.size() * sizeof(lub::NormalModel) +
-      (candidate_i.capacity() + candidate_jj.capacity()) * sizeof(int) + step_reach.capacity() * sizeof(double);
+      (candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity()) * sizeof(int) + step_reach.capacity() * sizeof(double);
 }

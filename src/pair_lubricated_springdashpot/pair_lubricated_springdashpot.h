@@ -46,7 +46,8 @@ class PairLubricatedSpringDashpot : public Pair {
   class FixContactHistory *history = nullptr;    // tangential elongation per contact
   std::string history_id;
   class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
-  std::vector<int> candidate_i, candidate_jj;    // list entries kept by eval's first pass
+  // List entries kept by eval's first pass: i, j and (with friction, for the history) jj.
+  std::vector<int> candidate_i, candidate_j, candidate_jj;
   std::vector<double> step_reach;                // per atom: bound on its move in one step
 
   void allocate();
