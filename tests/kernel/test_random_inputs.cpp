@@ -3,6 +3,7 @@
 // finite parts, a spring energy >= 0, and a film that never reverses the relative motion
 // within a step (|F_l| dt <= m_e |u_n| at a step, the caps of normal_model.h at a run start).
 #include "lubricated/normal_model.h"
+#include "lubricated/tangential.h"
 
 #include <gtest/gtest.h>
 
@@ -83,4 +84,65 @@ TEST(RandomInputs, NormalForceIsFiniteAndTheFilmNeverReversesTheMotion)
     }
   }
   EXPECT_GT(evaluated, 50000);    // most draws are valid: the test covers what it claims
+}
+
+namespace {
+
+Vec3 random_vector(Draw &d, double size)
+{
+  return {size * d.uniform(-1.0, 1.0), size * d.uniform(-1.0, 1.0), size * d.uniform(-1.0, 1.0)};
+}
+
+double length(const Vec3 &a) { return std::sqrt(dot(a, a)); }
+
+}    // namespace
+
+TEST(RandomInputs, TangentialForcesAreFiniteAndNeverReverseTheSlip)
+{
+  Draw d;
+  int evaluated = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    Coefficients c = random_coefficients(d);
+    c.friction = d.chance(0.2) ? 0.0 : d.log_uniform(1e-3, 10.0);
+    if (d.chance(0.7)) c.e_tangential = d.chance(0.1) ? 0.0 : d.uniform(0.0, 1.0);
+    c.rolling_friction = d.chance(0.5) ? 0.0 : d.log_uniform(1e-4, 1.0);
+    c.shearfilm = d.chance(0.5) ? 1 : -1;
+    if (!validate(c).empty()) continue;
+    const double dt = d.log_uniform(1e-9, 1e-1);
+    const TangentialModel tm = make_tangential_model(c, dt);
+    const Lubrication film = make_lubrication(Partner::particle, c.viscosity, c.eps_activation,
+                                              c.grid_spacing, c.eps_saturation, c.eps_release);
+    for (int state = 0; state < 50; ++state) {
+      const double radius = d.log_uniform(1e-7, 1.0), mass = d.log_uniform(1e-15, 1e3);
+      const double m_t = tangential_mass_ratio * mass;
+      Vec3 n = random_vector(d, 1.0);
+      if (length(n) < 1e-3) continue;
+      n = scaled(n, 1.0 / length(n));
+      const Vec3 s = tangential_part(random_vector(d, radius / dt * d.log_uniform(1e-12, 10.0)), n);
+      const double normal = mass * radius / (dt * dt) * d.log_uniform(1e-12, 10.0);
+      if (tm.contact_active()) {
+        Vec3 delta = random_vector(d, radius * d.log_uniform(1e-12, 1.0));
+        const Vec3 f = tangential_contact_force(tm, delta, n, s, m_t, normal, d.uniform(0.0, 1.0));
+        ASSERT_TRUE(std::isfinite(length(f)) && std::isfinite(length(delta)));
+        ASSERT_LE(length(f), c.friction * normal * (1.0 + 1e-12));
+      }
+      if (tm.rolling_active()) {
+        const double inertia = 0.2 * mass * radius * radius;
+        const Vec3 w = tangential_part(random_vector(d, d.log_uniform(1e-12, 10.0) / dt), n);
+        const Vec3 t = rolling_torque(tm, n, w, 0.5 * radius, inertia, normal);
+        ASSERT_TRUE(std::isfinite(length(t)));
+        ASSERT_LE(length(t) * dt, inertia * length(w) * (1.0 + 1e-12));    // never reverses w
+      }
+      if (tm.film_active()) {
+        const double eps = d.chance(0.3) ? d.uniform(-0.5, 0.0) : d.log_uniform(1e-9, 2.0);
+        const Vec3 f = shear_film_force(tm, s, eps, film.activation_for(radius), film.eps_saturation,
+                                        film.eps_release, 0.5 * radius, m_t);
+        ASSERT_TRUE(std::isfinite(length(f)));
+        ASSERT_LE(dot(f, s), 0.0) << "eps " << eps << " eps_al " << film.activation_for(radius);
+        ASSERT_LE(length(f) * dt, m_t * length(s) * (1.0 + 1e-12));
+      }
+      ++evaluated;
+    }
+  }
+  EXPECT_GT(evaluated, 50000);
 }
