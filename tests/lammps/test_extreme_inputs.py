@@ -147,3 +147,15 @@ def test_start_in_the_saturated_film_gains_no_energy(lmp, integrator):
     result = lmp(scenes.wall_bounce(0.9, dt_ru=0.1, gap0=5e-4, integrator=integrator,
                                     mu=scenes.viscosity_for_stokes(1e4)))
     assert 0.9 * (1 - 100 / 1e4) < result["e"] < 0.9
+
+
+@pytest.mark.parametrize("scene", ["wall", "pair"])
+def test_grid_activation_below_saturation_gives_no_film(lmp, scene):
+    """0.75 dx / R = 0.01 < eps_1 = 0.05: no film, so the dry rebound (an attracting film
+    before the fix: lambda(eps_1) - lambda(eps_al) < 0 gave e above e_d)."""
+    film = f"viscosity {scenes.viscosity_for_stokes(20)} grid {0.01 * R / 0.75} saturation 0.05"
+    if scene == "wall":
+        result = lmp(scenes.wall_bounce(0.9, dt_ru=0.005, extra=film))
+    else:    # pair film radius 2 R R / (R + R) = R
+        result = lmp(scenes.pair_bounce(0.9, dt_ru=0.005, extra=film))
+    assert result["e"] == pytest.approx(0.9, rel=1e-6)
