@@ -5,6 +5,7 @@ removes momentum and never reverses the relative motion; the contact is exact), 
 sphere released from an overlap leaves no faster than its stored spring energy allows.
 """
 import math
+import random
 
 import pytest
 
@@ -159,3 +160,71 @@ def test_grid_activation_below_saturation_gives_no_film(lmp, scene):
     else:    # pair film radius 2 R R / (R + R) = R
         result = lmp(scenes.pair_bounce(0.9, dt_ru=0.005, extra=film))
     assert result["e"] == pytest.approx(0.9, rel=1e-6)
+
+
+def random_scene(seed, coefficients, n=40):
+    """n polydisperse spheres (radii R/2 to 3R/2) in a box periodic in x and y between two walls, placed at
+    random with overlaps up to 3 % of the smaller radius and many pairs inside the film, at
+    random velocities up to U and spins up to U/R, two atom types."""
+    rng = random.Random(seed)
+    half = 6 * R
+    placed = []
+    while len(placed) < n:
+        r = R * rng.uniform(0.5, 1.5)
+        x = [rng.uniform(-half, half), rng.uniform(-half, half), rng.uniform(r * 1.05, 2 * half + 2 * R - r * 1.05)]
+        def gap(p):
+            d = [x[k] - p[k] for k in range(3)]
+            for k in range(2):    # periodic in x and y
+                d[k] -= 2 * half * round(d[k] / (2 * half))
+            return math.sqrt(sum(c * c for c in d)) - r - p[3]
+        if all(gap(p) > -0.03 * min(r, p[3]) for p in placed):
+            placed.append(x + [r])
+    atoms = "\n".join(
+        f"create_atoms {1 + k % 2} single {p[0]} {p[1]} {p[2]}\n"
+        f"set atom {k + 1} diameter {2 * p[3]} density {RHO}\n"
+        f"set atom {k + 1} vx {rng.uniform(-U, U)} vy {rng.uniform(-U, U)} vz {rng.uniform(-U, U)}\n"
+        f"set atom {k + 1} omega {rng.uniform(-U, U) / R} {rng.uniform(-U, U) / R} 0"
+        for k, p in enumerate(placed))
+    return scenes.HEADER.replace("${newton}", "on") + f"""
+region box block -{half} {half} -{half} {half} 0 {2 * half + 2 * R}
+create_box 2 box
+{atoms}
+pair_style lubricated/springdashpot
+pair_coeff 1 1 {coefficients[0]}
+pair_coeff 2 2 {coefficients[1]}
+pair_coeff 1 2 {coefficients[2]}
+fix walls all wall/lubrication {coefficients[0]} zplane 0.0 {2 * half + 2 * R}
+fix nve all nve/sphere
+neighbor {R} bin
+timestep {0.01 * R / U}
+compute rot all erotate/sphere
+thermo_style custom step ke c_rot pe
+thermo 0
+run 0
+print "RESULT start $(ke + c_rot + pe:%.15g)"
+run 2000
+print "RESULT end $(ke + c_rot + pe:%.15g)"
+"""
+
+
+RHO = scenes.RHO
+MU = scenes.viscosity_for_stokes(10)
+
+
+@pytest.mark.parametrize("seed,coefficients", [
+    (1, ["0.9", "0.5 ncontact 3", "0.7 ncontact 20"]),
+    (2, [f"0.9 viscosity {MU} activation 0.1", f"0.3 viscosity {MU} grid {0.2 * R}",
+         f"0.6 viscosity {10 * MU} activation 0.5 saturation 0.01"]),
+    (3, [f"0.9 viscosity {MU} activation 0.1 legendre 35", "0.8",
+         f"0.5 viscosity {MU} grid {0.01 * R} saturation 0.02 release 0.0"]),    # no film: eps_al < eps_1
+    (4, [f"0.9 viscosity {MU} activation 0.1 friction 0.4 rolling 0.05", "0.7 friction 1.0",
+         f"0.5 viscosity {MU} grid {0.2 * R} friction 0.2 tangential 0.0"]),
+])
+def test_random_polydisperse_scene_never_gains_energy(lmp, seed, coefficients):
+    """Mixed types, dry and wet, film and contact, friction: the total energy (translation,
+    rotation, springs) never grows. Only the wall spring's and the tangential springs'
+    energy are left out, which can only make the end look lower."""
+    result = lmp(random_scene(seed, coefficients))
+    assert result["start"] > 0.0
+    assert result["end"] <= result["start"] * (1 + 1e-9)
+    assert result["end"] < 0.9 * result["start"]    # it dissipated: collisions happened
