@@ -162,7 +162,7 @@ def test_grid_activation_below_saturation_gives_no_film(lmp, scene):
     assert result["e"] == pytest.approx(0.9, rel=1e-6)
 
 
-def random_scene(seed, coefficients, n=40):
+def random_scene(seed, coefficients, integrator="nve/sphere", n=40):
     """n polydisperse spheres (radii R/2 to 3R/2) in a box periodic in x and y between two walls, placed at
     random with overlaps up to 3 % of the smaller radius and many pairs inside the film, at
     random velocities up to U and spins up to U/R, two atom types."""
@@ -194,7 +194,7 @@ pair_coeff 1 1 {coefficients[0]}
 pair_coeff 2 2 {coefficients[1]}
 pair_coeff 1 2 {coefficients[2]}
 fix walls all wall/lubrication {coefficients[0]} zplane 0.0 {2 * half + 2 * R}
-fix nve all nve/sphere
+fix nve all {integrator}
 neighbor {R} bin
 timestep {0.01 * R / U}
 compute rot all erotate/sphere
@@ -220,11 +220,12 @@ MU = scenes.viscosity_for_stokes(10)
     (4, [f"0.9 viscosity {MU} activation 0.1 friction 0.4 rolling 0.05", "0.7 friction 1.0",
          f"0.5 viscosity {MU} grid {0.2 * R} friction 0.2 tangential 0.0"]),
 ])
-def test_random_polydisperse_scene_never_gains_energy(lmp, seed, coefficients):
+@pytest.mark.parametrize("integrator", ["nve/sphere", "nve/sphere/midpoint"])
+def test_random_polydisperse_scene_never_gains_energy(lmp, seed, coefficients, integrator):
     """Mixed types, dry and wet, film and contact, friction: the total energy (translation,
     rotation, springs) never grows. Only the wall spring's and the tangential springs'
     energy are left out, which can only make the end look lower."""
-    result = lmp(random_scene(seed, coefficients))
+    result = lmp(random_scene(seed, coefficients, integrator))
     assert result["start"] > 0.0
     assert result["end"] <= result["start"] * (1 + 1e-9)
     assert result["end"] < 0.9 * result["start"]    # it dissipated: collisions happened
