@@ -3,7 +3,8 @@
 The LAMMPS plugin's fix wall/lubrication and pair_coeff keywords map onto LIGGGHTS
 properties (src/liggghts/lubricated_properties.h): e_d -> coefficientRestitution (type 2 is
 the wall), ncontact -> lubricatedContactSteps, viscosity -> lubricatedViscosity,
-activation -> lubricatedActivation, legendre -> lubricatedLegendre.
+activation -> lubricatedActivation, grid -> lubricatedGridSpacing, saturation ->
+lubricatedSaturation, legendre -> lubricatedLegendre.
 """
 from scenes import EPS_AL, R, RHO, U, WET_DT, pair_bounce_layout, wall_bounce_steps
 
@@ -15,14 +16,20 @@ units si
 """
 
 
-def properties(e_dry, mu, ncontact, e_wall=None, friction=None, legendre=0.0):
+def properties(e_dry, mu, ncontact, e_wall=None, friction=None, legendre=0.0, grid=None,
+               saturation=None):
     e_wall = e_dry if e_wall is None else e_wall
     text = (f"fix m1 all property/global coefficientRestitution peratomtypepair 2 "
             f"{e_dry} {e_wall} {e_wall} {e_wall}\n"
             f"fix m2 all property/global lubricatedContactSteps scalar {ncontact}\n")
     if mu > 0:
-        text += (f"fix m3 all property/global lubricatedViscosity scalar {mu}\n"
-                 f"fix m4 all property/global lubricatedActivation scalar {EPS_AL}\n")
+        text += f"fix m3 all property/global lubricatedViscosity scalar {mu}\n"
+        if grid:
+            text += f"fix m4 all property/global lubricatedGridSpacing scalar {grid}\n"
+        else:
+            text += f"fix m4 all property/global lubricatedActivation scalar {EPS_AL}\n"
+        if saturation:
+            text += f"fix m7 all property/global lubricatedSaturation scalar {saturation}\n"
     if legendre:
         text += f"fix m6 all property/global lubricatedLegendre scalar {legendre}\n"
     if friction is not None:
@@ -31,7 +38,7 @@ def properties(e_dry, mu, ncontact, e_wall=None, friction=None, legendre=0.0):
 
 
 def wall_bounce(e_dry, dt_ru=WET_DT, mu=0.0, ncontact=8, gap0=0.2137, model="model lubricated",
-                legendre=0.0):
+                legendre=0.0, grid=None, saturation=None):
     """scenes.wall_bounce in LIGGGHTS: prints RESULT e and RESULT contact_steps."""
     dt = dt_ru * R / U
     steps = wall_bounce_steps(dt_ru, gap0, ncontact)
@@ -40,7 +47,7 @@ region box block -0.01 0.01 -0.01 0.01 0 0.02 units box
 create_box 2 box
 neighbor {0.5 * R} bin
 neigh_modify delay 0
-{properties(e_dry, mu, ncontact, legendre=legendre)}
+{properties(e_dry, mu, ncontact, legendre=legendre, grid=grid, saturation=saturation)}
 pair_style gran {model}
 pair_coeff * *
 fix wall all wall/gran {model} primitive type 2 zplane 0.0
@@ -62,7 +69,8 @@ print "RESULT contact_steps ${{n}}"
 
 
 def pair_bounce(e_dry, mass_ratio=1.0, dt_ru=WET_DT, mu=0.0, ncontact=8, gap0=0.2137,
-                radius_ratio=1.0, x_offset=0.0, skin=0.5 * R, model="model lubricated", legendre=0.0):
+                radius_ratio=1.0, x_offset=0.0, skin=0.5 * R, model="model lubricated", legendre=0.0,
+                grid=None, saturation=None):
     """scenes.pair_bounce in LIGGGHTS: two spheres head-on along x, centre-of-mass frame."""
     dt = dt_ru * R / U
     r2, rho2, x1, x2, v1, v2, half, steps = pair_bounce_layout(
@@ -72,7 +80,7 @@ region box block -{half} {half} -{half} {half} -{half} {half} units box
 create_box 2 box
 neighbor {skin} bin
 neigh_modify delay 0
-{properties(e_dry, mu, ncontact, legendre=legendre)}
+{properties(e_dry, mu, ncontact, legendre=legendre, grid=grid, saturation=saturation)}
 pair_style gran {model}
 pair_coeff * *
 create_atoms 1 single {x1} 0 0 units box

@@ -47,6 +47,18 @@ def test_calibrated_contact_matches_lammps_and_the_law(run, kind):
     assert lig["e"] / 0.9 == pytest.approx(scenes.legendre(20), abs=0.05)
 
 
+@pytest.mark.parametrize("kind", ["wall", "pair"])
+def test_grid_activation_below_saturation_gives_no_film(run, kind):
+    """0.75 dx / R = 0.01 < eps_1 = 0.05: no film (the kernel's rule), so the dry rebound."""
+    mu, dx = scenes.viscosity_for_stokes(20), 0.01 * scenes.R / 0.75
+    build = {"wall": (liggghts_scenes.wall_bounce, scenes.wall_bounce),
+             "pair": (liggghts_scenes.pair_bounce, scenes.pair_bounce)}[kind]
+    lig = run.lig(build[0](0.9, dt_ru=0.005, mu=mu, grid=dx, saturation=0.05))
+    lmp = run.lmp(build[1](0.9, dt_ru=0.005, extra=f"viscosity {mu} grid {dx} saturation 0.05"))
+    assert lig["e"] == pytest.approx(lmp["e"], abs=1e-3)
+    assert lig["e"] == pytest.approx(0.9, rel=1e-3)
+
+
 def test_unequal_masses_match_lammps(run):
     mu = scenes.viscosity_for_stokes(100)
     lig = run.lig(liggghts_scenes.pair_bounce(0.7, mass_ratio=3.0, radius_ratio=0.5, mu=mu))
