@@ -1,7 +1,10 @@
 // Random coefficients over their whole allowed ranges (validate() decides what is allowed)
-// and random states, far past the usual ones: every evaluation of the normal model must give
-// finite parts, a spring energy >= 0, and a film that never reverses the relative motion
-// within a step (|F_l| dt <= m_e |u_n| at a step, the caps of normal_model.h at a run start).
+// and random states, far past the usual ones. The normal model must give finite parts, a
+// spring energy >= 0 and a film that never reverses the relative motion within a step
+// (|F_l| dt <= m_e |u_n| at a step, the caps of normal_model.h at a run start); the
+// tangential parts must stay finite, within their caps and never reverse the slip; the drag
+// coefficient must be finite and positive.
+#include "lubricated/drag.h"
 #include "lubricated/normal_model.h"
 #include "lubricated/tangential.h"
 
@@ -145,4 +148,26 @@ TEST(RandomInputs, TangentialForcesAreFiniteAndNeverReverseTheSlip)
     }
   }
   EXPECT_GT(evaluated, 50000);
+}
+
+TEST(RandomInputs, DragCoefficientIsFiniteAndPositive)
+{
+  Draw d;
+  const DragLaw laws[] = {DragLaw::stokes, DragLaw::schiller_naumann};
+  const Hindrance hindrances[] = {Hindrance::none, Hindrance::richardson_zaki, Hindrance::di_felice};
+  for (int trial = 0; trial < 100000; ++trial) {
+    DragModel m;
+    m.viscosity = d.log_uniform(1e-7, 1e3);
+    m.density = d.chance(0.1) ? 0.0 : d.log_uniform(1e-3, 1e5);
+    m.law = laws[trial % 2];
+    m.hindrance = hindrances[(trial / 2) % 3];
+    m.rz_exponent = d.uniform(1.0, 6.0);
+    const double diameter = d.log_uniform(1e-9, 1.0);
+    const double slip = d.chance(0.1) ? 0.0 : d.log_uniform(1e-15, 1e4);
+    const double voidage = d.chance(0.1) ? 0.0 : d.uniform(-0.5, 1.5);    // clamped inside
+    const double beta = drag_beta(m, diameter, slip, voidage);
+    ASSERT_TRUE(std::isfinite(beta) && beta > 0.0)
+        << "mu " << m.viscosity << " rho " << m.density << " d " << diameter << " w " << slip
+        << " voidage " << voidage << " law " << trial % 2 << " hindrance " << (trial / 2) % 3;
+  }
 }
