@@ -30,7 +30,8 @@ breakdown), dangerous neighbor builds, and physics checks on the final state of 
 contacts per sphere, fastest sphere). Logs, data files and runs.csv (every timed run) stay in
 --out (wiped at the start);
 the table goes to stdout, to OUT/RESULTS.md and to --results (bench/RESULTS.md by default,
-bench/RESULTS_FRICTION.md with --friction; 'none' to skip). Targets (from the issue): plugin dry <= 1.0 x gran/hooke, wet <= 1.3 x.
+bench/RESULTS_FRICTION.md with --friction; 'none' to skip). Targets (from the issue): plugin
+dry <= 1.0 x gran/hooke, wet <= 1.3 x.
 """
 import argparse
 import datetime

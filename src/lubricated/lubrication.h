@@ -109,7 +109,8 @@ struct Lubrication {
   // Activation distance in units of R for a contact of lubrication radius R. With a grid, a
   // contact so large that 0.75 dx / R falls below eps_1 gets eps_al = eps_1, that is no film:
   // lambda(eps_1) - lambda(eps_al) < 0 would make a film that pulls the surfaces together
-  // (a fixed eps_al must exceed eps_1, coefficients.h).
+  // (MODEL.md section 1 orders the zones eps_2 < eps_1 < eps_al; a fixed eps_al must exceed
+  // eps_1, coefficients.h).
   double activation_for(const FilmRadius &radius) const
   {
     return grid_spacing > 0.0 ? std::max(grid_activation * grid_spacing * radius.inverse, eps_saturation)

@@ -515,5 +515,6 @@ double PairLubricatedSpringDashpot::memory_usage()
 {
   return Pair::memory_usage() + coeffs.size() * sizeof(lub::Coefficients) +
       models.size() * sizeof(lub::NormalModel) +
-      (candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity()) * sizeof(int) + step_reach.capacity() * sizeof(double);
+      (candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity()) * sizeof(int) +
+      step_reach.capacity() * sizeof(double);
 }

@@ -11,7 +11,8 @@ import pytest
 
 import scenes
 
-R, U = scenes.R, scenes.U
+R, U, RHO = scenes.R, scenes.U, scenes.RHO
+MU = scenes.viscosity_for_stokes(10)    # St = 10 for the random scenes
 
 
 @pytest.mark.parametrize("dt_ru", [0.02, 0.002])
@@ -206,9 +207,6 @@ run 2000
 print "RESULT end $(ke + c_rot + pe:%.15g)"
 """
 
-
-RHO = scenes.RHO
-MU = scenes.viscosity_for_stokes(10)
 
 
 @pytest.mark.parametrize("seed,coefficients", [
