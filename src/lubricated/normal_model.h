@@ -180,6 +180,22 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
   return f;
 }
 
+// The film force of normal_force() (exact integration, a step) for a pair that stays apart over
+// the step, gap >= 0 and gap - u_n dt >= 0, where no contact can act: without branches or
+// calls, for loops over such pairs that the compiler vectorises. Requires an active film;
+// GRID: whether it has a grid spacing (Lubrication::activation_inline).
+template <bool GRID>
+inline double film_force_apart(const Lubrication &lub, double gap, const FilmRadius &radius,
+                               double reduced_mass, double u_n, double dt, double inv_dt)
+{
+  const Lubrication::Activation al = lub.activation_inline<GRID>(radius);
+  const double after = gap * radius.inverse, before = (gap - u_n * dt) * radius.inverse;
+  const double impulse = lub.six_pi_mu * radius.value * radius.value *
+      (lub.film_integral_inline(after, al) - lub.film_integral_inline(before, al));
+  const double limit = reduced_mass * std::fabs(u_n);
+  return std::max(-limit, std::min(limit, impulse)) * inv_dt;
+}
+
 inline NormalForce normal_force(const NormalModel &m, double gap, double radius,
                                 double reduced_mass, double u_n, Evaluation when = Evaluation::step)
 {

@@ -3,6 +3,7 @@
 ------------------------------------------------------------------------- */
 
 #include "pair_lubricated_springdashpot.h"
+#include "film_only_pairs.h"
 
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
@@ -147,6 +148,20 @@ void PairLubricatedSpringDashpot::init_style()
   for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
     midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
 
+  // The film-only list needs one film for every pair and the step velocity in v.
+  film_only_split = any_wet && !any_tangential && !midpoint;
+  double first[lub::Coefficients::packed_size], other[lub::Coefficients::packed_size];
+  coeffs[index(1, 1)].pack(first);
+  for (int i = 1; i <= n && film_only_split; i++)
+    for (int j = i; j <= n && film_only_split; j++) {
+      coeffs[index(i, j)].pack(other);
+      film_only_split = setflag[i][j] && coeffs[index(i, j)].exact_contact &&
+          std::equal(first, first + lub::Coefficients::packed_size, other);
+    }
+
+  if (film_only_split && comm->me == 0)
+    utils::logmesg(lmp, "{}: pairs apart over a step take the film in a vectorised loop\n", STYLE);
+
   // A dry model acts only in contact: a radius-based list is enough and cheapest. The film
   // acts beyond contact, where radius-based lists lose pairs on rebuild (LAMMPS PR #4685),
   // so a wet model asks for a list with per-type cutoffs that cover the whole film.
@@ -229,7 +244,9 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
     if (any_wet) eval<true, true>();
     else eval<false, true>();
   } else {
-    if (any_wet) eval<true, false>();
+    // The film-only list for steps (a run's set-up evaluates with full-step velocities).
+    if (any_wet && film_only_split && !update->setupflag) eval<true, false, true>();
+    else if (any_wet) eval<true, false>();
     else eval<false, false>();
   }
   if (vflag_fdotr) virial_fdotr_compute();
@@ -298,7 +315,7 @@ static inline bool within_a_step(double rsq, double dv_dot_del, double dt, doubl
   return (s <= 0.0) | (s * s < outer_sq * rsq);
 }
 
-template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
+template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpot::eval()
 {
   double **x = atom->x;
   double **v = atom->v;
@@ -334,7 +351,9 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
   // film's reach (the largest of the two types) or in contact, or within what both atoms
   // can move in a step. With friction, entries holding an elongation to forget are kept too.
   // Whether an entry is kept follows no pattern a branch predictor could learn, hence no branch.
-  int ncandidate = 0;
+  // SPLIT: entries apart by more than both atoms can move in the step (no contact can start)
+  // but in the film's reach go to the film-only list instead.
+  int ncandidate = 0, nfilm = 0;
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
@@ -348,22 +367,35 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
       candidate_j.resize(2 * (ncandidate + jnum));
       if (TANGENTIAL) candidate_jj.resize(2 * (ncandidate + jnum));
     }
+    if (SPLIT && nfilm + jnum > static_cast<int>(film_i.size())) {
+      film_i.resize(2 * (nfilm + jnum));
+      film_j.resize(2 * (nfilm + jnum));
+    }
     int *out_i = candidate_i.data(), *out_j = candidate_j.data(), *out_jj = candidate_jj.data();
+    int *film_out_i = film_i.data(), *film_out_j = film_j.data();
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double delx = xi - x[j][0];
       const double dely = yi - x[j][1];
       const double delz = zi - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
-      const double near = radi_moved + radius[j] + moves[j] + (WET ? reach_row[type[j]] : 0.0);
+      const double touch = radi_moved + radius[j] + moves[j];
+      const double near = touch + (WET ? reach_row[type[j]] : 0.0);
       out_i[ncandidate] = i;
       out_j[ncandidate] = j;
       if (TANGENTIAL) out_jj[ncandidate] = jj;
-      int keep = rsq < near * near;
+      int keep = rsq < (SPLIT ? touch * touch : near * near);
+      if (SPLIT) {
+        film_out_i[nfilm] = i;
+        film_out_j[nfilm] = j;
+        nfilm += (rsq < near * near) & !keep;
+      }
       if (TANGENTIAL && touched) keep |= touched[jj];
       ncandidate += keep;
     }
   }
+
+  if (SPLIT) film_only_forces(nfilm);
 
   // Pass 2 over the kept entries only.
   double **torque = atom->torque;
@@ -449,6 +481,37 @@ template <bool WET, bool TANGENTIAL> void PairLubricatedSpringDashpot::eval()
         ev_tally_xyz(i, j, nlocal, newton_pair, fn.energy, 0.0, fx, fy, fz, delx, dely, delz);
       else
         ev_tally(i, j, nlocal, newton_pair, fn.energy, 0.0, fpair, delx, dely, delz);
+    }
+  }
+}
+
+// The film of the pairs in the film-only list (computed vectorised, applied here), in chunks
+// that stay in the cache between the two.
+void PairLubricatedSpringDashpot::film_only_forces(int nfilm)
+{
+  if (nfilm == 0) return;
+  double **x = atom->x, **f = atom->f;
+  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+  const film_only_pairs::Atoms atoms{x[0], atom->v[0], atom->radius, atom->rmass};
+  const lub::Lubrication &film = models[index(1, 1)].lubrication;
+  constexpr int chunk = 256;
+  film_fpair.resize(chunk);
+  for (int start = 0; start < nfilm; start += chunk) {
+    const int n = std::min(chunk, nfilm - start);
+    film_only_pairs::forces(atoms, film, update->dt, &film_i[start], &film_j[start], n, film_fpair.data());
+    for (int c = 0; c < n; c++) {
+      const int i = film_i[start + c], j = film_j[start + c];
+      const double fpair = film_fpair[c];
+      const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+      f[i][0] += delx * fpair;
+      f[i][1] += dely * fpair;
+      f[i][2] += delz * fpair;
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= delx * fpair;
+        f[j][1] -= dely * fpair;
+        f[j][2] -= delz * fpair;
+      }
+      if (evflag) ev_tally(i, j, nlocal, newton_pair, 0.0, 0.0, fpair, delx, dely, delz);
     }
   }
 }

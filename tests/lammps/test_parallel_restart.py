@@ -4,6 +4,7 @@ Relative tolerance 1e-10 (the issue's): the ranks only reorder floating-point su
 """
 import pytest
 
+import scenes
 from scene_chain import chain, dump_state
 
 
@@ -87,3 +88,22 @@ def test_midpoint_integrator_ignores_a_later_runs_setup(lmp):
     split = lmp(chain(steps=300, extra_run="run 300").replace(
         "fix nve all nve/sphere", "fix nve all nve/sphere/midpoint") + dump_state())
     assert_same_state(whole, split, rel=1e-13)
+
+
+
+def test_film_only_loop_agrees_with_the_general_loop(lmp):
+    """Pairs apart over a step take the film in a vectorised loop of their own where one film
+    serves every type pair. Giving type 2 the same contact as t_c = 8 dt instead of N_c = 8
+    (equal physics, other coefficients) sends every pair through the general loop instead."""
+    small_spheres_type_2 = "\n".join(f"set atom {k} type 2" for k in range(2, 9, 2))
+    two_types = chain().replace("create_box 1 box", "create_box 2 box").replace(
+        "pair_style", small_spheres_type_2 + "\npair_style")
+    vectorised = lmp(two_types + dump_state())
+    assert "in a vectorised loop" in lmp.log
+    assert collisions_happened(lmp.log)
+    dt = 0.005 * scenes.R / scenes.U
+    film = f"viscosity {scenes.viscosity_for_stokes(100)} activation 0.09375"
+    general = two_types.replace("fix walls", f"pair_coeff 2 2 0.8 tcontact {8 * dt!r} {film}\nfix walls")
+    reference = lmp(general + dump_state())
+    assert "in a vectorised loop" not in lmp.log
+    assert_same_state(vectorised, reference)
