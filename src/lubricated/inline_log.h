@@ -12,7 +12,7 @@ namespace lubricated {
 // [sqrt(1/2), sqrt(2)): ln x = k ln 2 + 2 atanh(s), s = (m - 1) / (m + 1), |s| < 0.1716,
 // atanh by its odd series to s^21 (the next term is below 1e-18 of the sum): within a few
 // units in the last place of std::log.
-inline double log_inline(double x)
+__attribute__((always_inline)) inline double log_inline(double x)
 {
   constexpr std::uint64_t sqrt_half_bits = 0x3FE6A09E667F3BCDull;    // sqrt(1/2)
   constexpr std::uint64_t exponent_bias = 0x3FFull << 52;

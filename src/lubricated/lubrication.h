@@ -153,14 +153,15 @@ struct Lubrication {
   // The same two without branches or calls (log_inline), for loops the compiler vectorises;
   // equal to activation() and film_integral() within rounding. Only for an active film;
   // GRID: whether it has a grid spacing.
-  template <bool GRID> Activation activation_inline(const FilmRadius &radius) const
+  template <bool GRID>
+  __attribute__((always_inline)) Activation activation_inline(const FilmRadius &radius) const
   {
     if (!GRID) return {eps_activation, lambda_activation, integral_activation};
     const double eps_al = std::max(grid_activation * grid_spacing * radius.inverse, eps_saturation);
     const double l = log_inline(eps_al);
     return {eps_al, expansion.lambda(eps_al, l), expansion.integral(eps_al, l)};
   }
-  double film_integral_inline(double eps, const Activation &al) const
+  __attribute__((always_inline)) double film_integral_inline(double eps, const Activation &al) const
   {
     const double film = std::min(std::max(eps, eps_saturation), al.eps);    // eps_1 <= . <= eps_al
     const double saturated = std::min(std::max(eps, eps_release), eps_saturation);

@@ -185,8 +185,9 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
 // calls, for loops over such pairs that the compiler vectorises. Requires an active film;
 // GRID: whether it has a grid spacing (Lubrication::activation_inline).
 template <bool GRID>
-inline double film_force_apart(const Lubrication &lub, double gap, const FilmRadius &radius,
-                               double reduced_mass, double u_n, double dt, double inv_dt)
+__attribute__((always_inline)) inline double
+film_force_apart(const Lubrication &lub, double gap, const FilmRadius &radius, double reduced_mass,
+                 double u_n, double dt, double inv_dt)
 {
   const Lubrication::Activation al = lub.activation_inline<GRID>(radius);
   const double after = gap * radius.inverse, before = (gap - u_n * dt) * radius.inverse;
@@ -194,6 +195,33 @@ inline double film_force_apart(const Lubrication &lub, double gap, const FilmRad
       (lub.film_integral_inline(after, al) - lub.film_integral_inline(before, al));
   const double limit = reduced_mass * std::fabs(u_n);
   return std::max(-limit, std::min(limit, impulse)) * inv_dt;
+}
+
+// normal_force() (exact integration, a step) for a pair in sustained contact: in overlap now
+// and a step ago (so its film is saturated, P linear in eps) and, by the oscillator's
+// recurrence, still a step ahead. Without branches or calls, for loops the compiler
+// vectorises; `sustained` says whether the pair is in that state (if not, the result means
+// nothing: take normal_force()). GRID: whether the film has a grid spacing.
+template <bool GRID>
+__attribute__((always_inline)) inline NormalForce
+sustained_contact_force(const NormalModel &m, double gap, const FilmRadius &radius,
+                        double reduced_mass, double u_n, bool &sustained)
+{
+  const ContactStep &cs = m.step;
+  const double g0 = gap - u_n * cs.dt;
+  const double g2 = 2.0 * cs.E * cs.C * gap - cs.E * cs.E * g0;
+  sustained = (gap < 0.0) & (g0 < 0.0) & (g2 < 0.0);
+  NormalForce f;
+  f.energy = 0.5 * reduced_mass * m.contact.stiffness_per_mass * gap * gap;
+  f.contact = -reduced_mass * (cs.stiffness_step * gap + cs.damping_step * u_n);
+  const Lubrication &lub = m.lubrication;
+  const double lambda_al = lub.activation_inline<GRID>(radius).lambda;
+  const double release = lub.eps_release * radius.value;
+  const double impulse = lub.six_pi_mu * radius.value * (lub.lambda_saturated - lambda_al) *
+      (std::max(g0, release) - std::max(gap, release));
+  const double limit = reduced_mass * std::fabs(u_n);
+  f.lubrication = std::max(-limit, std::min(limit, impulse)) * cs.inv_dt;
+  return f;
 }
 
 inline NormalForce normal_force(const NormalModel &m, double gap, double radius,

@@ -3,7 +3,7 @@
 ------------------------------------------------------------------------- */
 
 #include "pair_lubricated_springdashpot.h"
-#include "film_only_pairs.h"
+#include "vector_pairs.h"
 
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
@@ -148,19 +148,19 @@ void PairLubricatedSpringDashpot::init_style()
   for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
     midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
 
-  // The film-only list needs one film for every pair and the step velocity in v.
-  film_only_split = any_wet && !any_tangential && !midpoint;
+  // The vectorised loops need one model for every pair and the step velocity in v.
+  vector_loops = !any_tangential && !midpoint;
   double first[lub::Coefficients::packed_size], other[lub::Coefficients::packed_size];
   coeffs[index(1, 1)].pack(first);
-  for (int i = 1; i <= n && film_only_split; i++)
-    for (int j = i; j <= n && film_only_split; j++) {
+  for (int i = 1; i <= n && vector_loops; i++)
+    for (int j = i; j <= n && vector_loops; j++) {
       coeffs[index(i, j)].pack(other);
-      film_only_split = setflag[i][j] && coeffs[index(i, j)].exact_contact &&
+      vector_loops = setflag[i][j] && coeffs[index(i, j)].exact_contact &&
           std::equal(first, first + lub::Coefficients::packed_size, other);
     }
-
-  if (film_only_split && comm->me == 0)
-    utils::logmesg(lmp, "{}: pairs apart over a step take the film in a vectorised loop\n", STYLE);
+  if (vector_loops && comm->me == 0)
+    utils::logmesg(lmp, "{}: pairs in sustained contact{} take vectorised loops\n", STYLE,
+                   any_wet ? " and pairs apart over a step" : "");
 
   // A dry model acts only in contact: a radius-based list is enough and cheapest. The film
   // acts beyond contact, where radius-based lists lose pairs on rebuild (LAMMPS PR #4685),
@@ -244,10 +244,10 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
     if (any_wet) eval<true, true>();
     else eval<false, true>();
   } else {
-    // The film-only list for steps (a run's set-up evaluates with full-step velocities).
-    if (any_wet && film_only_split && !update->setupflag) eval<true, false, true>();
-    else if (any_wet) eval<true, false>();
-    else eval<false, false>();
+    // The vectorised loops for steps (a run's set-up evaluates with full-step velocities).
+    const bool vectorised = vector_loops && !update->setupflag;
+    if (any_wet) vectorised ? eval<true, false, true>() : eval<true, false>();
+    else vectorised ? eval<false, false, true>() : eval<false, false>();
   }
   if (vflag_fdotr) virial_fdotr_compute();
 }
@@ -315,6 +315,56 @@ static inline bool within_a_step(double rsq, double dv_dot_del, double dt, doubl
   return (s <= 0.0) | (s * s < outer_sq * rsq);
 }
 
+// The vectorised loops (vector_pairs.h) over the film-only list and the kept entries, in
+// chunks that stay in the cache between computing and applying the forces; kept entries
+// where a contact starts or ends go through the general loop, evaluate(i, j, jj).
+template <class Evaluate>
+void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evaluate &evaluate)
+{
+  if (ncandidate + nfilm == 0) return;
+  double **x = atom->x, **f = atom->f;
+  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+  const vector_pairs::Atoms atoms{x[0], atom->v[0], atom->radius, atom->rmass};
+  const lub::NormalModel &model = models[index(1, 1)];
+  constexpr int chunk = 256;
+  vector_fpair.resize(chunk);
+  vector_energy.resize(chunk);
+  vector_done.resize(chunk);
+  int rest[chunk];
+  auto apply = [&](int i, int j, double fpair, double energy) {
+    const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+    f[i][0] += delx * fpair;
+    f[i][1] += dely * fpair;
+    f[i][2] += delz * fpair;
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= delx * fpair;
+      f[j][1] -= dely * fpair;
+      f[j][2] -= delz * fpair;
+    }
+    if (evflag) ev_tally(i, j, nlocal, newton_pair, energy, 0.0, fpair, delx, dely, delz);
+  };
+  for (int start = 0; start < nfilm; start += chunk) {
+    const int n = std::min(chunk, nfilm - start);
+    vector_pairs::film_only(atoms, model, &film_i[start], &film_j[start], n, vector_fpair.data());
+    for (int c = 0; c < n; c++) apply(film_i[start + c], film_j[start + c], vector_fpair[c], 0.0);
+  }
+  for (int start = 0; start < ncandidate; start += chunk) {
+    const int n = std::min(chunk, ncandidate - start);
+    const int *pair_i = &candidate_i[start], *pair_j = &candidate_j[start];
+    vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, vector_fpair.data(),
+                                  vector_energy.data(), vector_done.data());
+    int nrest = 0;
+    for (int c = 0; c < n; c++) {
+      // Branch-free (which pairs are done follows no pattern): the others have fpair = 0 here
+      // and are listed for the general loop.
+      apply(pair_i[c], pair_j[c], vector_fpair[c], vector_energy[c]);
+      rest[nrest] = c;
+      nrest += !vector_done[c];
+    }
+    for (int k = 0; k < nrest; k++) evaluate(pair_i[rest[k]], pair_j[rest[k]], 0);
+  }
+}
+
 template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpot::eval()
 {
   double **x = atom->x;
@@ -367,7 +417,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
       candidate_j.resize(2 * (ncandidate + jnum));
       if (TANGENTIAL) candidate_jj.resize(2 * (ncandidate + jnum));
     }
-    if (SPLIT && nfilm + jnum > static_cast<int>(film_i.size())) {
+    if (WET && SPLIT && nfilm + jnum > static_cast<int>(film_i.size())) {
       film_i.resize(2 * (nfilm + jnum));
       film_j.resize(2 * (nfilm + jnum));
     }
@@ -385,7 +435,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
       out_j[ncandidate] = j;
       if (TANGENTIAL) out_jj[ncandidate] = jj;
       int keep = rsq < (SPLIT ? touch * touch : near * near);
-      if (SPLIT) {
+      if (WET && SPLIT) {
         film_out_i[nfilm] = i;
         film_out_j[nfilm] = j;
         nfilm += (rsq < near * near) & !keep;
@@ -395,13 +445,10 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     }
   }
 
-  if (SPLIT) film_only_forces(nfilm);
-
-  // Pass 2 over the kept entries only.
+  // Pass 2: the pairs kept by pass 1 (j kept with them: no second look-up in the neighbor
+  // list; jj for the history only).
   double **torque = atom->torque;
-  for (int c = 0; c < ncandidate; c++) {
-    // j kept by pass 1 (no second look-up in the neighbor list); jj for the history only.
-    const int i = candidate_i[c], j = candidate_j[c], jj = TANGENTIAL ? candidate_jj[c] : 0;
+  auto evaluate = [&](const int i, const int j, const int jj) {
     const double delx = x[i][0] - x[j][0];
     const double dely = x[i][1] - x[j][1];
     const double delz = x[i][2] - x[j][2];
@@ -438,12 +485,12 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
       // Apart and out of this pair's film (pass 1 used the types' largest): only a contact
       // starting, or a film entered or left, within a step can act.
       forget();
-      if (!model.exact) continue;
-      if (!within_a_step(rsq, dvx * delx + dvy * dely + dvz * delz, dt, outer * outer)) continue;
+      if (!model.exact) return;
+      if (!within_a_step(rsq, dvx * delx + dvy * dely + dvz * delz, dt, outer * outer)) return;
     }
     if (rsq == 0.0) {    // coincident centres: no normal direction is defined
       forget();
-      continue;
+      return;
     }
 
     const double r = std::sqrt(rsq);
@@ -482,38 +529,14 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
       else
         ev_tally(i, j, nlocal, newton_pair, fn.energy, 0.0, fpair, delx, dely, delz);
     }
-  }
-}
+  };
 
-// The film of the pairs in the film-only list (computed vectorised, applied here), in chunks
-// that stay in the cache between the two.
-void PairLubricatedSpringDashpot::film_only_forces(int nfilm)
-{
-  if (nfilm == 0) return;
-  double **x = atom->x, **f = atom->f;
-  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
-  const film_only_pairs::Atoms atoms{x[0], atom->v[0], atom->radius, atom->rmass};
-  const lub::Lubrication &film = models[index(1, 1)].lubrication;
-  constexpr int chunk = 256;
-  film_fpair.resize(chunk);
-  for (int start = 0; start < nfilm; start += chunk) {
-    const int n = std::min(chunk, nfilm - start);
-    film_only_pairs::forces(atoms, film, update->dt, &film_i[start], &film_j[start], n, film_fpair.data());
-    for (int c = 0; c < n; c++) {
-      const int i = film_i[start + c], j = film_j[start + c];
-      const double fpair = film_fpair[c];
-      const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
-      f[i][0] += delx * fpair;
-      f[i][1] += dely * fpair;
-      f[i][2] += delz * fpair;
-      if (newton_pair || j < nlocal) {
-        f[j][0] -= delx * fpair;
-        f[j][1] -= dely * fpair;
-        f[j][2] -= delz * fpair;
-      }
-      if (evflag) ev_tally(i, j, nlocal, newton_pair, 0.0, 0.0, fpair, delx, dely, delz);
-    }
+  if (SPLIT) {
+    vector_forces(ncandidate, nfilm, evaluate);
+    return;
   }
+  for (int c = 0; c < ncandidate; c++)
+    evaluate(candidate_i[c], candidate_j[c], TANGENTIAL ? candidate_jj[c] : 0);
 }
 
 double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, double rsq,
@@ -578,6 +601,7 @@ double PairLubricatedSpringDashpot::memory_usage()
 {
   return Pair::memory_usage() + coeffs.size() * sizeof(lub::Coefficients) +
       models.size() * sizeof(lub::NormalModel) +
-      (candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity()) * sizeof(int) +
-      step_reach.capacity() * sizeof(double);
+      (candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity() +
+       film_i.capacity() + film_j.capacity() + vector_done.capacity()) * sizeof(int) +
+      (step_reach.capacity() + vector_fpair.capacity() + vector_energy.capacity()) * sizeof(double);
 }

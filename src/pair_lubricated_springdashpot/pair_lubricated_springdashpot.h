@@ -49,19 +49,21 @@ class PairLubricatedSpringDashpot : public Pair {
   // List entries kept by eval's first pass: i, j and (with friction, for the history) jj.
   std::vector<int> candidate_i, candidate_j, candidate_jj;
   std::vector<double> step_reach;                // per atom: bound on its move in one step
-  // Wet, no tangential parts, exact integration, one film for all type pairs, velocity Verlet:
-  // pass 1 puts the pairs that cannot touch within the step in a list of their own, whose
-  // film force film_only_pairs.h computes vectorised.
-  bool film_only_split = false;
+  // One set of coefficients for every type pair, no tangential parts, exact integration,
+  // velocity Verlet: pass 1 puts the pairs that cannot touch within the step but are in the
+  // film in a list of their own, and vector_pairs.h computes them, the pairs in sustained
+  // contact and the other pairs that stay apart, vectorised.
+  bool vector_loops = false;
   std::vector<int> film_i, film_j;
-  std::vector<double> film_fpair;
+  std::vector<double> vector_fpair, vector_energy;
+  std::vector<int> vector_done;
 
   void allocate();
   int ntypes_alloc = 0;
   int index(int itype, int jtype) const { return itype * (ntypes_alloc + 1) + jtype; }
   void update_models();
   template <bool WET, bool TANGENTIAL, bool SPLIT = false> void eval();
-  void film_only_forces(int nfilm);
+  template <class Evaluate> void vector_forces(int ncandidate, int nfilm, Evaluate &evaluate);
   // One contact's tangential force and torques (inlined into eval's loop).
   __attribute__((always_inline)) inline void tangential(int i, int j, int jj, const double *del,
                                                         const double *dv, double rinv, double gap,

@@ -91,19 +91,26 @@ def test_midpoint_integrator_ignores_a_later_runs_setup(lmp):
 
 
 
-def test_film_only_loop_agrees_with_the_general_loop(lmp):
-    """Pairs apart over a step take the film in a vectorised loop of their own where one film
-    serves every type pair. Giving type 2 the same contact as t_c = 8 dt instead of N_c = 8
-    (equal physics, other coefficients) sends every pair through the general loop instead."""
+
+@pytest.mark.parametrize("wet", [True, False])
+def test_vectorised_loops_agree_with_the_general_loop(lmp, wet):
+    """Pairs in sustained contact and pairs apart over a step (the film alone) take vectorised
+    loops where one set of coefficients serves every type pair. Giving type 2 the same contact
+    as t_c = 8 dt instead of N_c = 8 (equal physics, other coefficients) sends every pair
+    through the general loop instead."""
+    mu = scenes.viscosity_for_stokes(100)
+    film = f"viscosity {mu} activation 0.09375" if wet else ""
     small_spheres_type_2 = "\n".join(f"set atom {k} type 2" for k in range(2, 9, 2))
     two_types = chain().replace("create_box 1 box", "create_box 2 box").replace(
-        "pair_style", small_spheres_type_2 + "\npair_style")
+        "pair_style", small_spheres_type_2 + "\npair_style").replace(
+        f"pair_coeff * * 0.8 ncontact 8 viscosity {mu} activation 0.09375",
+        f"pair_coeff * * 0.8 ncontact 8 {film}")
+    assert f"ncontact 8 {film}\n" in two_types
     vectorised = lmp(two_types + dump_state())
-    assert "in a vectorised loop" in lmp.log
+    assert "take vectorised loops" in lmp.log
     assert collisions_happened(lmp.log)
     dt = 0.005 * scenes.R / scenes.U
-    film = f"viscosity {scenes.viscosity_for_stokes(100)} activation 0.09375"
     general = two_types.replace("fix walls", f"pair_coeff 2 2 0.8 tcontact {8 * dt!r} {film}\nfix walls")
     reference = lmp(general + dump_state())
-    assert "in a vectorised loop" not in lmp.log
+    assert "take vectorised loops" not in lmp.log
     assert_same_state(vectorised, reference)

@@ -1,0 +1,105 @@
+/* ----------------------------------------------------------------------
+   Vectorised loops of pair style lubricated/springdashpot (see vector_pairs.h)
+------------------------------------------------------------------------- */
+
+#include "vector_pairs.h"
+
+#include <cmath>
+
+namespace lub = lubricated;
+
+// x86-64-v3 (AVX2) and v4 (AVX-512) have the gathers the loops need; elsewhere they run scalar.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
+#define VECTOR_PAIRS_CLONES \
+  __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define VECTOR_PAIRS_CLONES
+#endif
+
+namespace LAMMPS_NS {
+namespace vector_pairs {
+
+  // What every pair needs: separation, normal velocity, radii and reduced mass.
+  struct Geometry {
+    double delx, dely, delz, r, rinv, u_n, radsum, m_e;
+    lub::FilmRadius film;
+  };
+
+  __attribute__((always_inline)) static inline Geometry geometry(const Atoms &atoms, int i, int j)
+  {
+    const double *__restrict x = atoms.x;
+    const double *__restrict v = atoms.v;
+    Geometry g;
+    g.delx = x[3 * i] - x[3 * j];
+    g.dely = x[3 * i + 1] - x[3 * j + 1];
+    g.delz = x[3 * i + 2] - x[3 * j + 2];
+    const double dvx = v[3 * i] - v[3 * j];
+    const double dvy = v[3 * i + 1] - v[3 * j + 1];
+    const double dvz = v[3 * i + 2] - v[3 * j + 2];
+    g.r = std::sqrt(g.delx * g.delx + g.dely * g.dely + g.delz * g.delz);
+    g.rinv = 1.0 / g.r;
+    g.u_n = (dvx * g.delx + dvy * g.dely + dvz * g.delz) * g.rinv;
+    const double radi = atoms.radius[i], radj = atoms.radius[j];
+    g.radsum = radi + radj;
+    g.film = lub::film_radius_pair(radi, radj);
+    g.m_e = atoms.rmass[i] * atoms.rmass[j] / (atoms.rmass[i] + atoms.rmass[j]);
+    return g;
+  }
+
+  template <bool GRID>
+  __attribute__((always_inline)) static inline void film_only_loop(
+      const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
+      const int *__restrict pair_j, int n, double *__restrict fpair)
+  {
+    const lub::Lubrication film = model.lubrication;    // a local copy: invariant to the compiler
+    const double dt = model.step.dt, inv_dt = model.step.inv_dt;
+    for (int c = 0; c < n; c++) {
+      const Geometry g = geometry(atoms, pair_i[c], pair_j[c]);
+      fpair[c] = lub::film_force_apart<GRID>(film, g.r - g.radsum, g.film, g.m_e, g.u_n, dt, inv_dt) * g.rinv;
+    }
+  }
+
+  template <bool WET, bool GRID>
+  __attribute__((always_inline)) static inline void contact_or_film_loop(
+      const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
+      const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict energy,
+      int *__restrict done)
+  {
+    const double dt = model.step.dt, inv_dt = model.step.inv_dt;
+    for (int c = 0; c < n; c++) {
+      const Geometry g = geometry(atoms, pair_i[c], pair_j[c]);
+      const double gap = g.r - g.radsum;
+      bool sustained;
+      const lub::NormalForce contact =
+          lub::sustained_contact_force<GRID>(model, gap, g.film, g.m_e, g.u_n, sustained);
+      // Apart over the step (no contact can act): the film alone, as in film_only.
+      const bool apart = !lub::contact_possible(gap, g.u_n, dt);
+      const double film =
+          WET ? lub::film_force_apart<GRID>(model.lubrication, gap, g.film, g.m_e, g.u_n, dt, inv_dt) : 0.0;
+      const bool known = (sustained | apart) & (g.r > 0.0);
+      fpair[c] = known ? (sustained ? contact.total() : film) * g.rinv : 0.0;
+      energy[c] = known & sustained ? contact.energy : 0.0;
+      done[c] = known;
+    }
+  }
+
+  VECTOR_PAIRS_CLONES
+  void film_only(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
+                 const int *pair_j, int n, double *fpair)
+  {
+    if (model.lubrication.grid_spacing > 0.0) film_only_loop<true>(atoms, model, pair_i, pair_j, n, fpair);
+    else film_only_loop<false>(atoms, model, pair_i, pair_j, n, fpair);
+  }
+
+  VECTOR_PAIRS_CLONES
+  void contact_or_film(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
+                       const int *pair_j, int n, double *fpair, double *energy, int *done)
+  {
+    const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
+    if (!wet) contact_or_film_loop<false, false>(atoms, model, pair_i, pair_j, n, fpair, energy, done);
+    else if (grid) contact_or_film_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, energy, done);
+    else contact_or_film_loop<true, false>(atoms, model, pair_i, pair_j, n, fpair, energy, done);
+  }
+
+}    // namespace vector_pairs
+}    // namespace LAMMPS_NS

@@ -1,0 +1,39 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Vectorised loops of pair style lubricated/springdashpot for the two common kinds of pair:
+   pairs that stay apart over the coming step (the film alone, lubricated::film_force_apart)
+   and pairs in sustained contact (lubricated::sustained_contact_force). Loops without branches that
+   the compiler vectorises (gathers of the atoms' data), for the instruction set found when
+   the plugin is loaded. The pair style applies the forces and takes every other pair through
+   its general loop.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_LUBRICATED_VECTOR_PAIRS_H
+#define LMP_LUBRICATED_VECTOR_PAIRS_H
+
+#include "lubricated/normal_model.h"
+
+namespace LAMMPS_NS {
+namespace vector_pairs {
+
+  // Per-atom data: x and v 3 per atom, contiguous (LAMMPS's x[0], v[0]).
+  struct Atoms {
+    const double *x, *v, *radius, *rmass;
+  };
+
+  // The pairs (pair_i[c], pair_j[c]), c < n, all of model `model` (exact integration, a step).
+  // fpair[c] = force / r: the force on i is fpair (x_i - x_j), on j the opposite.
+
+  // Pairs apart by more than both atoms move in the step, with an active film.
+  void film_only(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
+                 const int *pair_j, int n, double *fpair);
+
+  // Pairs that may touch within the step: done[c] = 1 where pair c is in sustained contact or
+  // stays apart over the step (the film alone), with its fpair and spring energy[c]; 0 where
+  // a contact starts or ends, for the general loop (fpair, energy 0).
+  void contact_or_film(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
+                       const int *pair_j, int n, double *fpair, double *energy, int *done);
+
+}    // namespace vector_pairs
+}    // namespace LAMMPS_NS
+
+#endif
