@@ -51,11 +51,11 @@ namespace vector_pairs {
       const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
       const int *__restrict pair_j, int n, double *__restrict fpair)
   {
-    const lub::Lubrication film = model.lubrication;    // a local copy: invariant to the compiler
     const double dt = model.step.dt, inv_dt = model.step.inv_dt;
     for (int c = 0; c < n; c++) {
       const Geometry g = geometry(atoms, pair_i[c], pair_j[c]);
-      fpair[c] = lub::film_force_apart<GRID>(film, g.r - g.radsum, g.film, g.m_e, g.u_n, dt, inv_dt) * g.rinv;
+      fpair[c] = g.rinv * lub::film_force_apart<GRID>(model.lubrication, g.r - g.radsum, g.film, g.m_e,
+                                                      g.u_n, dt, inv_dt);
     }
   }
 
