@@ -106,11 +106,25 @@ def test_vectorised_loops_agree_with_the_general_loop(lmp, wet):
         f"pair_coeff * * 0.8 ncontact 8 viscosity {mu} activation 0.09375",
         f"pair_coeff * * 0.8 ncontact 8 {film}")
     assert f"ncontact 8 {film}\n" in two_types
+    # Every 10 steps: the spring energy and the pressure (virial) tallied by the loops too.
+    two_types = two_types.replace("thermo 100\nthermo_style custom step ke pe f_walls",
+                                  "thermo 10\nthermo_style custom step ke pe press")
     vectorised = lmp(two_types + dump_state())
     assert "take vectorised loops" in lmp.log
     assert collisions_happened(lmp.log)
+    vectorised_thermo = thermo_rows(lmp.log)
     dt = 0.005 * scenes.R / scenes.U
     general = two_types.replace("fix walls", f"pair_coeff 2 2 0.8 tcontact {8 * dt!r} {film}\nfix walls")
     reference = lmp(general + dump_state())
     assert "take vectorised loops" not in lmp.log
     assert_same_state(vectorised, reference)
+    reference_thermo = thermo_rows(lmp.log)
+    assert len(vectorised_thermo) == 61 and sum(row[2] > 0.0 for row in vectorised_thermo) >= 3
+    for mine, theirs in zip(vectorised_thermo, reference_thermo):
+        assert mine == pytest.approx(theirs, rel=1e-10, abs=1e-20)
+
+
+def thermo_rows(log):
+    """The numeric rows of the thermo output (step ke pe press)."""
+    rows = [line.split() for line in log.splitlines()]
+    return [[float(v) for v in r] for r in rows if len(r) == 4 and r[0].isdigit()]
