@@ -65,11 +65,35 @@ void PairLubricatedSpringDashpot::allocate()
   maxrad.assign(n + 1, 0.0);
 }
 
+// pair_style lubricated/springdashpot [vector yes|no]
 void PairLubricatedSpringDashpot::settings(int narg, char **arg)
 {
-  if (narg > 0)
-    error->all(FLERR, "{} takes no arguments, got '{}' (coefficients go in pair_coeff)", STYLE,
-               arg[0]);
+  vector_enabled = true;
+  for (int iarg = 0; iarg < narg; iarg += 2) {
+    const std::string key = arg[iarg];
+    if (key != "vector")
+      error->all(FLERR, "{}: unknown keyword '{}' (allowed: vector yes|no; coefficients go in "
+                 "pair_coeff)", STYLE, key);
+    if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword vector needs a value (yes or no)", STYLE);
+    const std::string value = arg[iarg + 1];
+    if (value != "yes" && value != "no")
+      error->all(FLERR, "{}: vector = {} is not allowed (yes or no)", STYLE, value);
+    vector_enabled = value == "yes";
+  }
+}
+
+void PairLubricatedSpringDashpot::write_restart_settings(FILE *fp)
+{
+  const int flag = vector_enabled ? 1 : 0;
+  fwrite(&flag, sizeof(int), 1, fp);
+}
+
+void PairLubricatedSpringDashpot::read_restart_settings(FILE *fp)
+{
+  int flag = 1;
+  if (comm->me == 0) utils::sfread(FLERR, &flag, sizeof(int), 1, fp, nullptr, error);
+  MPI_Bcast(&flag, 1, MPI_INT, 0, world);
+  vector_enabled = flag != 0;
 }
 
 // pair_coeff I J e_d [ncontact N | tcontact t_c] [viscosity mu_f] [activation eps_al | grid dx]
@@ -148,15 +172,18 @@ void PairLubricatedSpringDashpot::init_style()
   for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
     midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
 
-  // The vectorised loops need one model for every pair and the step velocity in v.
-  vector_loops = !any_tangential && !midpoint;
+  // The vectorised loops need the step velocity in v and exactly integrated normal forces;
+  // type pairs with other coefficients are grouped by type pair (vector_forces).
+  vector_loops = vector_enabled && !any_tangential && !midpoint;
+  uniform_models = true;
   double first[lub::Coefficients::packed_size], other[lub::Coefficients::packed_size];
   coeffs[index(1, 1)].pack(first);
-  for (int i = 1; i <= n && vector_loops; i++)
-    for (int j = i; j <= n && vector_loops; j++) {
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++) {
+      if (!setflag[i][j]) continue;
       coeffs[index(i, j)].pack(other);
-      vector_loops = setflag[i][j] && coeffs[index(i, j)].exact_contact &&
-          std::equal(first, first + lub::Coefficients::packed_size, other);
+      vector_loops = vector_loops && coeffs[index(i, j)].exact_contact;
+      uniform_models = uniform_models && std::equal(first, first + lub::Coefficients::packed_size, other);
     }
   if (vector_loops && comm->me == 0)
     utils::logmesg(lmp, "{}: pairs in sustained contact{} take vectorised loops\n", STYLE,
@@ -317,7 +344,8 @@ static inline bool within_a_step(double rsq, double dv_dot_del, double dt, doubl
 
 // The vectorised loops (vector_pairs.h) over the film-only list and the kept entries, in
 // chunks that stay in the cache between computing and applying the forces; kept entries
-// where a contact starts or ends go through the general loop, evaluate(i, j, jj).
+// where a contact starts or ends go through the general loop, evaluate(i, j, jj). Unless one
+// model serves every pair, each list is first grouped by type pair (a counting sort).
 template <class Evaluate>
 void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evaluate &evaluate)
 {
@@ -325,7 +353,6 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
   double **x = atom->x, **f = atom->f;
   const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
   const vector_pairs::Atoms atoms{x[0], atom->v[0], atom->radius, atom->rmass};
-  const lub::NormalModel &model = models[index(1, 1)];
   constexpr int chunk = 256;
   vector_fpair.resize(chunk);
   vector_energy.resize(chunk);
@@ -343,26 +370,54 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
     }
     if (evflag) ev_tally(i, j, nlocal, newton_pair, energy, 0.0, fpair, delx, dely, delz);
   };
-  for (int start = 0; start < nfilm; start += chunk) {
-    const int n = std::min(chunk, nfilm - start);
-    vector_pairs::film_only(atoms, model, &film_i[start], &film_j[start], n, vector_fpair.data());
-    for (int c = 0; c < n; c++) apply(film_i[start + c], film_j[start + c], vector_fpair[c], 0.0);
-  }
-  for (int start = 0; start < ncandidate; start += chunk) {
-    const int n = std::min(chunk, ncandidate - start);
-    const int *pair_i = &candidate_i[start], *pair_j = &candidate_j[start];
-    vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, vector_fpair.data(),
-                                  vector_energy.data(), vector_done.data());
-    int nrest = 0;
-    for (int c = 0; c < n; c++) {
-      // Branch-free (which pairs are done follows no pattern): the others have fpair = 0 here
-      // and are listed for the general loop.
-      apply(pair_i[c], pair_j[c], vector_fpair[c], vector_energy[c]);
-      rest[nrest] = c;
-      nrest += !vector_done[c];
+  auto film_list = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int count) {
+    for (int start = 0; start < count; start += chunk) {
+      const int n = std::min(chunk, count - start);
+      vector_pairs::film_only(atoms, model, pair_i + start, pair_j + start, n, vector_fpair.data());
+      for (int c = 0; c < n; c++) apply(pair_i[start + c], pair_j[start + c], vector_fpair[c], 0.0);
     }
-    for (int k = 0; k < nrest; k++) evaluate(pair_i[rest[k]], pair_j[rest[k]], 0);
+  };
+  auto kept_list = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int count) {
+    for (int start = 0; start < count; start += chunk) {
+      const int n = std::min(chunk, count - start);
+      const int *chunk_i = pair_i + start, *chunk_j = pair_j + start;
+      vector_pairs::contact_or_film(atoms, model, chunk_i, chunk_j, n, vector_fpair.data(),
+                                    vector_energy.data(), vector_done.data());
+      int nrest = 0;
+      for (int c = 0; c < n; c++) {
+        // Branch-free (which pairs are done follows no pattern): the others have fpair = 0
+        // here and are listed for the general loop.
+        apply(chunk_i[c], chunk_j[c], vector_fpair[c], vector_energy[c]);
+        rest[nrest] = c;
+        nrest += !vector_done[c];
+      }
+      for (int k = 0; k < nrest; k++) evaluate(chunk_i[rest[k]], chunk_j[rest[k]], 0);
+    }
+  };
+  if (uniform_models) {
+    film_list(models[index(1, 1)], film_i.data(), film_j.data(), nfilm);
+    kept_list(models[index(1, 1)], candidate_i.data(), candidate_j.data(), ncandidate);
+    return;
   }
+  const int *type = atom->type;
+  auto by_type_pair = [&](const int *pair_i, const int *pair_j, int count, auto &run) {
+    const int nkeys = static_cast<int>(models.size());
+    group_start.assign(nkeys + 1, 0);
+    for (int c = 0; c < count; c++) group_start[index(type[pair_i[c]], type[pair_j[c]]) + 1]++;
+    for (int k = 0; k < nkeys; k++) group_start[k + 1] += group_start[k];
+    group_i.resize(count);
+    group_j.resize(count);
+    for (int c = 0; c < count; c++) {    // moves group_start[k] to the end of group k
+      const int at = group_start[index(type[pair_i[c]], type[pair_j[c]])]++;
+      group_i[at] = pair_i[c];
+      group_j[at] = pair_j[c];
+    }
+    for (int k = 0, begin = 0; k < nkeys; begin = group_start[k++])
+      if (group_start[k] > begin)
+        run(models[k], group_i.data() + begin, group_j.data() + begin, group_start[k] - begin);
+  };
+  by_type_pair(film_i.data(), film_j.data(), nfilm, film_list);
+  by_type_pair(candidate_i.data(), candidate_j.data(), ncandidate, kept_list);
 }
 
 template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpot::eval()
@@ -568,6 +623,7 @@ double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, d
 
 void PairLubricatedSpringDashpot::write_restart(FILE *fp)
 {
+  write_restart_settings(fp);
   double buf[lub::Coefficients::packed_size];
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
@@ -580,6 +636,7 @@ void PairLubricatedSpringDashpot::write_restart(FILE *fp)
 
 void PairLubricatedSpringDashpot::read_restart(FILE *fp)
 {
+  read_restart_settings(fp);
   allocate();
   const int me = comm->me;
   double buf[lub::Coefficients::packed_size];

@@ -25,6 +25,8 @@ class PairLubricatedSpringDashpot : public Pair {
 
   void compute(int, int) override;
   void settings(int, char **) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
   void coeff(int, char **) override;
   void init_style() override;
   void init_list(int, class NeighList *) override;
@@ -49,14 +51,17 @@ class PairLubricatedSpringDashpot : public Pair {
   // List entries kept by eval's first pass: i, j and (with friction, for the history) jj.
   std::vector<int> candidate_i, candidate_j, candidate_jj;
   std::vector<double> step_reach;                // per atom: bound on its move in one step
-  // One set of coefficients for every type pair, no tangential parts, exact integration,
-  // velocity Verlet: pass 1 puts the pairs that cannot touch within the step but are in the
-  // film in a list of their own, and vector_pairs.h computes them, the pairs in sustained
-  // contact and the other pairs that stay apart, vectorised.
+  // No tangential parts, exact integration, velocity Verlet (and `vector yes`): pass 1 puts the
+  // pairs that cannot touch within the step but are in the film in a list of their own, and
+  // vector_pairs.h computes them, the pairs in sustained contact and the other pairs that stay
+  // apart, vectorised, type pair by type pair unless one model serves all (uniform_models).
+  bool vector_enabled = true;
+  bool uniform_models = true;
   bool vector_loops = false;
   std::vector<int> film_i, film_j;
   std::vector<double> vector_fpair, vector_energy;
   std::vector<int> vector_done;
+  std::vector<int> group_start, group_i, group_j;    // entries sorted by type pair
 
   void allocate();
   int ntypes_alloc = 0;

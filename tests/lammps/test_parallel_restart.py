@@ -92,20 +92,28 @@ def test_midpoint_integrator_ignores_a_later_runs_setup(lmp):
 
 
 
-@pytest.mark.parametrize("wet", [True, False])
-def test_vectorised_loops_agree_with_the_general_loop(lmp, wet):
+VECTOR_CASES = {
+    # one model for all type pairs
+    "wet": "pair_coeff * * 0.8 ncontact 8 {film}",
+    "dry": "pair_coeff * * 0.8 ncontact 8",
+    # a model per type pair, dry and wet mixed: grouped by type pair
+    "mixed": "pair_coeff 1 1 0.8 ncontact 8 {film}\npair_coeff 1 2 0.6 ncontact 6\n"
+             "pair_coeff 2 2 0.9 ncontact 10 viscosity {mu2} grid 1e-4",
+}
+
+
+@pytest.mark.parametrize("case", VECTOR_CASES)
+def test_vectorised_loops_agree_with_the_general_loop(lmp, case):
     """Pairs in sustained contact and pairs apart over a step (the film alone) take vectorised
-    loops where one set of coefficients serves every type pair. Giving type 2 the same contact
-    as t_c = 8 dt instead of N_c = 8 (equal physics, other coefficients) sends every pair
-    through the general loop instead."""
+    loops, by default; `pair_style lubricated/springdashpot vector no` takes every pair through
+    the general loop. Same trajectories, spring energy and virial."""
     mu = scenes.viscosity_for_stokes(100)
-    film = f"viscosity {mu} activation 0.09375" if wet else ""
     small_spheres_type_2 = "\n".join(f"set atom {k} type 2" for k in range(2, 9, 2))
+    coefficients = VECTOR_CASES[case].format(film=f"viscosity {mu} activation 0.09375", mu2=2 * mu)
     two_types = chain().replace("create_box 1 box", "create_box 2 box").replace(
         "pair_style", small_spheres_type_2 + "\npair_style").replace(
-        f"pair_coeff * * 0.8 ncontact 8 viscosity {mu} activation 0.09375",
-        f"pair_coeff * * 0.8 ncontact 8 {film}")
-    assert f"ncontact 8 {film}\n" in two_types
+        f"pair_coeff * * 0.8 ncontact 8 viscosity {mu} activation 0.09375", coefficients)
+    assert coefficients in two_types
     # Every 10 steps: the spring energy and the pressure (virial) tallied by the loops too.
     two_types = two_types.replace("thermo 100\nthermo_style custom step ke pe f_walls",
                                   "thermo 10\nthermo_style custom step ke pe press")
@@ -113,8 +121,8 @@ def test_vectorised_loops_agree_with_the_general_loop(lmp, wet):
     assert "take vectorised loops" in lmp.log
     assert collisions_happened(lmp.log)
     vectorised_thermo = thermo_rows(lmp.log)
-    dt = 0.005 * scenes.R / scenes.U
-    general = two_types.replace("fix walls", f"pair_coeff 2 2 0.8 tcontact {8 * dt!r} {film}\nfix walls")
+    general = two_types.replace("pair_style lubricated/springdashpot",
+                                "pair_style lubricated/springdashpot vector no")
     reference = lmp(general + dump_state())
     assert "take vectorised loops" not in lmp.log
     assert_same_state(vectorised, reference)
@@ -122,6 +130,20 @@ def test_vectorised_loops_agree_with_the_general_loop(lmp, wet):
     assert len(vectorised_thermo) == 61 and sum(row[2] > 0.0 for row in vectorised_thermo) >= 3
     for mine, theirs in zip(vectorised_thermo, reference_thermo):
         assert mine == pytest.approx(theirs, rel=1e-10, abs=1e-20)
+
+
+def test_vector_setting_survives_a_restart(lmp):
+    """`vector no` is stored in the restart file with the coefficients."""
+    script = chain(steps=10, extra_run="write_restart mid.restart").replace(
+        "pair_style lubricated/springdashpot", "pair_style lubricated/springdashpot vector no")
+    lmp(script)
+    assert "take vectorised loops" not in lmp.log
+    lmp(continue_from_restart("fix nve all nve/sphere"), name="in.restart")
+    assert "pair_style" not in (lmp.dir / "in.restart").read_text()
+    assert "take vectorised loops" not in lmp.log
+    lmp(chain(steps=10, extra_run="write_restart mid.restart"))
+    lmp(continue_from_restart("fix nve all nve/sphere"), name="in.restart")
+    assert "take vectorised loops" in lmp.log
 
 
 def thermo_rows(log):
