@@ -345,79 +345,85 @@ static inline bool within_a_step(double rsq, double dv_dot_del, double dt, doubl
 // The vectorised loops (vector_pairs.h) over the film-only list and the kept entries, in
 // chunks that stay in the cache between computing and applying the forces; kept entries
 // where a contact starts or ends go through the general loop, evaluate(i, j, jj). Unless one
-// model serves every pair, each list is first grouped by type pair (a counting sort).
+// model serves every pair, each chunk is first grouped by type pair (a counting sort).
 template <class Evaluate>
 void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evaluate &evaluate)
 {
   if (ncandidate + nfilm == 0) return;
   double **x = atom->x, **f = atom->f;
+  const int *type = atom->type;
   const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
   const vector_pairs::Atoms atoms{x[0], atom->v[0], atom->radius, atom->rmass};
   constexpr int chunk = 256;
-  vector_fpair.resize(chunk);
-  vector_energy.resize(chunk);
-  vector_done.resize(chunk);
-  int rest[chunk];
-  auto apply = [&](int i, int j, double fpair, double energy) {
+  double fpair[chunk], energy[chunk];
+  int done[chunk], rest[chunk];
+  auto apply = [&](int i, int j, double fij, double eij) {
     const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
-    f[i][0] += delx * fpair;
-    f[i][1] += dely * fpair;
-    f[i][2] += delz * fpair;
+    f[i][0] += delx * fij;
+    f[i][1] += dely * fij;
+    f[i][2] += delz * fij;
     if (newton_pair || j < nlocal) {
-      f[j][0] -= delx * fpair;
-      f[j][1] -= dely * fpair;
-      f[j][2] -= delz * fpair;
+      f[j][0] -= delx * fij;
+      f[j][1] -= dely * fij;
+      f[j][2] -= delz * fij;
     }
-    if (evflag) ev_tally(i, j, nlocal, newton_pair, energy, 0.0, fpair, delx, dely, delz);
+    if (evflag) ev_tally(i, j, nlocal, newton_pair, eij, 0.0, fij, delx, dely, delz);
   };
-  auto film_list = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int count) {
+  // At most one chunk of pairs of one model.
+  auto film_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
+    vector_pairs::film_only(atoms, model, pair_i, pair_j, n, fpair);
+    for (int c = 0; c < n; c++) apply(pair_i[c], pair_j[c], fpair[c], 0.0);
+  };
+  auto kept_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
+    vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, fpair, energy, done);
+    int nrest = 0;
+    for (int c = 0; c < n; c++) {
+      // Branch-free (which pairs are done follows no pattern): the others have fpair = 0 here
+      // and are listed for the general loop.
+      apply(pair_i[c], pair_j[c], fpair[c], energy[c]);
+      rest[nrest] = c;
+      nrest += !done[c];
+    }
+    for (int k = 0; k < nrest; k++) evaluate(pair_i[rest[k]], pair_j[rest[k]], 0);
+  };
+  // A list in chunks, each grouped by type pair (a counting sort within the chunk, which
+  // keeps the atoms' data in the cache) unless one model serves all.
+  int key[chunk], grouped_i[chunk], grouped_j[chunk];
+  group_count.resize(models.size(), 0);    // all zero between chunks
+  auto run_list = [&](const int *list_i, const int *list_j, int count, auto &pairs) {
     for (int start = 0; start < count; start += chunk) {
       const int n = std::min(chunk, count - start);
-      vector_pairs::film_only(atoms, model, pair_i + start, pair_j + start, n, vector_fpair.data());
-      for (int c = 0; c < n; c++) apply(pair_i[start + c], pair_j[start + c], vector_fpair[c], 0.0);
-    }
-  };
-  auto kept_list = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int count) {
-    for (int start = 0; start < count; start += chunk) {
-      const int n = std::min(chunk, count - start);
-      const int *chunk_i = pair_i + start, *chunk_j = pair_j + start;
-      vector_pairs::contact_or_film(atoms, model, chunk_i, chunk_j, n, vector_fpair.data(),
-                                    vector_energy.data(), vector_done.data());
-      int nrest = 0;
-      for (int c = 0; c < n; c++) {
-        // Branch-free (which pairs are done follows no pattern): the others have fpair = 0
-        // here and are listed for the general loop.
-        apply(chunk_i[c], chunk_j[c], vector_fpair[c], vector_energy[c]);
-        rest[nrest] = c;
-        nrest += !vector_done[c];
+      const int *pair_i = list_i + start, *pair_j = list_j + start;
+      if (uniform_models) {
+        pairs(models[index(1, 1)], pair_i, pair_j, n);
+        continue;
       }
-      for (int k = 0; k < nrest; k++) evaluate(chunk_i[rest[k]], chunk_j[rest[k]], 0);
+      group_keys.clear();
+      for (int c = 0; c < n; c++) {
+        key[c] = index(type[pair_i[c]], type[pair_j[c]]);
+        if (group_count[key[c]]++ == 0) group_keys.push_back(key[c]);
+      }
+      int begin = 0;
+      for (int k : group_keys) {    // group_count becomes each group's next free slot
+        const int size = group_count[k];
+        group_count[k] = begin;
+        begin += size;
+      }
+      for (int c = 0; c < n; c++) {
+        const int at = group_count[key[c]]++;
+        grouped_i[at] = pair_i[c];
+        grouped_j[at] = pair_j[c];
+      }
+      begin = 0;
+      for (int k : group_keys) {
+        pairs(models[k], grouped_i + begin, grouped_j + begin, group_count[k] - begin);
+        begin = group_count[k];
+        group_count[k] = 0;
+      }
     }
   };
-  if (uniform_models) {
-    film_list(models[index(1, 1)], film_i.data(), film_j.data(), nfilm);
-    kept_list(models[index(1, 1)], candidate_i.data(), candidate_j.data(), ncandidate);
-    return;
-  }
-  const int *type = atom->type;
-  auto by_type_pair = [&](const int *pair_i, const int *pair_j, int count, auto &run) {
-    const int nkeys = static_cast<int>(models.size());
-    group_start.assign(nkeys + 1, 0);
-    for (int c = 0; c < count; c++) group_start[index(type[pair_i[c]], type[pair_j[c]]) + 1]++;
-    for (int k = 0; k < nkeys; k++) group_start[k + 1] += group_start[k];
-    group_i.resize(count);
-    group_j.resize(count);
-    for (int c = 0; c < count; c++) {    // moves group_start[k] to the end of group k
-      const int at = group_start[index(type[pair_i[c]], type[pair_j[c]])]++;
-      group_i[at] = pair_i[c];
-      group_j[at] = pair_j[c];
-    }
-    for (int k = 0, begin = 0; k < nkeys; begin = group_start[k++])
-      if (group_start[k] > begin)
-        run(models[k], group_i.data() + begin, group_j.data() + begin, group_start[k] - begin);
-  };
-  by_type_pair(film_i.data(), film_j.data(), nfilm, film_list);
-  by_type_pair(candidate_i.data(), candidate_j.data(), ncandidate, kept_list);
+  run_list(film_i.data(), film_j.data(), nfilm, film_pairs);
+  run_list(candidate_i.data(), candidate_j.data(), ncandidate, kept_pairs);
 }
 
 template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpot::eval()
@@ -659,6 +665,7 @@ double PairLubricatedSpringDashpot::memory_usage()
   return Pair::memory_usage() + coeffs.size() * sizeof(lub::Coefficients) +
       models.size() * sizeof(lub::NormalModel) +
       (candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity() +
-       film_i.capacity() + film_j.capacity() + vector_done.capacity()) * sizeof(int) +
-      (step_reach.capacity() + vector_fpair.capacity() + vector_energy.capacity()) * sizeof(double);
+       film_i.capacity() + film_j.capacity() + group_count.capacity() + group_keys.capacity()) *
+          sizeof(int) +
+      step_reach.capacity() * sizeof(double);
 }

@@ -59,9 +59,7 @@ class PairLubricatedSpringDashpot : public Pair {
   bool uniform_models = true;
   bool vector_loops = false;
   std::vector<int> film_i, film_j;
-  std::vector<double> vector_fpair, vector_energy;
-  std::vector<int> vector_done;
-  std::vector<int> group_start, group_i, group_j;    // entries sorted by type pair
+  std::vector<int> group_count, group_keys;    // grouping a chunk by type pair
 
   void allocate();
   int ntypes_alloc = 0;
