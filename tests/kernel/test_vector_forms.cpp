@@ -20,6 +20,46 @@ double ulps(double a, double b)
   return std::fabs(a - b) / (std::nextafter(std::fabs(b), INFINITY) - std::fabs(b));
 }
 
+struct Draw {
+  std::mt19937_64 rng;
+  explicit Draw(unsigned seed) : rng(seed) {}
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+  double log_uniform(double lo, double hi) { return lo * std::pow(hi / lo, uniform(0.0, 1.0)); }
+};
+
+// A film with a fixed activation or (grid) a grid spacing, over the allowed ranges.
+void draw_film(Draw &d, bool grid, Coefficients &c)
+{
+  c.viscosity = d.log_uniform(1e-6, 10.0);
+  c.eps_saturation = d.log_uniform(1e-6, 0.05);
+  if (grid) c.grid_spacing = d.log_uniform(1e-6, 1e-1);
+  else c.eps_activation = d.uniform(1.5 * c.eps_saturation, 1.0);
+  c.eps_release = d.uniform(-0.1, 0.0);
+}
+
+// Two spheres of radii up to 5 apart, their film radius and a reduced mass.
+struct DrawnPair {
+  FilmRadius radius;
+  double mass;
+};
+DrawnPair draw_pair(Draw &d)
+{
+  const double ri = d.log_uniform(1e-6, 1e-1), rj = ri * d.log_uniform(0.2, 5.0);
+  return {film_radius_pair(ri, rj), d.log_uniform(1e-12, 1.0)};
+}
+
+// normal_force takes the film over a step as a difference of film integrals P, sums of terms
+// of order 1: its rounding is about 1e-16 of those terms (as a force), however close the two
+// ends of the step; the forms here differ from it by that and by the inline logarithm.
+double film_rounding(const NormalModel &m, const FilmRadius &radius, double dt)
+{
+  const Lubrication &lub = m.lubrication;
+  const Lubrication::Activation al = lub.activation(radius);
+  const double terms = std::fabs(al.integral) + std::fabs(lub.integral_saturated) +
+      (std::fabs(al.lambda) + std::fabs(lub.lambda_saturated)) * (al.eps + 0.1);
+  return 1e-13 * lub.six_pi_mu * radius.value * radius.value * terms / dt;
+}
+
 }    // namespace
 
 TEST(InlineLog, WithinFourUlpsOfTheLibraryOverTheNormalRange)
@@ -44,46 +84,32 @@ TEST(InlineLog, WithinFourUlpsOfTheLibraryOverTheNormalRange)
 
 // Random wet, exactly integrated pairs, apart over the step (gap >= 0 and gap - u_n dt >= 0,
 // from inside the saturated film to past eps_al): the film-only force equals normal_force's
-// film (and normal_force has no contact part there). The two differ only by the rounding of
-// their logarithms, amplified by the difference P(after) - P(before) of film integrals: the
-// tolerance is 1e-13 of the size of the terms of that difference.
+// film (and normal_force has no contact part there), within film_rounding.
 TEST(FilmApart, EqualsTheFilmOfNormalForce)
 {
-  std::mt19937_64 rng(2026);
-  auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
-  auto log_uniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, uniform(0.0, 1.0)); };
+  Draw d(2026);
   int compared = 0, in_film = 0, clamped = 0;
   for (int trial = 0; trial < 400; ++trial) {
     Coefficients c;
-    c.e_dry = log_uniform(1e-3, 1.0);
-    c.viscosity = log_uniform(1e-6, 10.0);
-    c.eps_saturation = log_uniform(1e-6, 0.05);
+    c.e_dry = d.log_uniform(1e-3, 1.0);
     const bool grid = trial % 3 == 0;
-    if (grid) c.grid_spacing = log_uniform(1e-6, 1e-1);
-    else c.eps_activation = uniform(1.5 * c.eps_saturation, 1.0);
-    c.eps_release = uniform(-0.1, 0.0);
+    draw_film(d, grid, c);
     if (trial % 4 == 0) c.eps_release = 0.0, c.legendre = 35.0;
     ASSERT_EQ(validate(c), "");
-    const double dt = log_uniform(1e-8, 1e-2);
+    const double dt = d.log_uniform(1e-8, 1e-2);
     const NormalModel m = make_normal_model(c, Partner::particle, dt);
     for (int state = 0; state < 100; ++state) {
-      const double ri = log_uniform(1e-6, 1e-1), rj = ri * log_uniform(0.2, 5.0);
-      const FilmRadius radius = film_radius_pair(ri, rj);
-      const double mass = log_uniform(1e-12, 1.0);
+      const auto [radius, mass] = draw_pair(d);
       const double eps_al = m.lubrication.activation_for(radius);
-      const double gap = radius.value * log_uniform(1e-3 * c.eps_saturation, 2.0 * eps_al);
+      const double gap = radius.value * d.log_uniform(1e-3 * c.eps_saturation, 2.0 * eps_al);
       // |u_n| dt from a creeping fraction of the gap up to the whole gap (closing) or beyond.
-      const double u_n = gap / dt * log_uniform(1e-9, 1.0) * (state % 2 ? 1.0 : -1.0);
+      const double u_n = gap / dt * d.log_uniform(1e-9, 1.0) * (state % 2 ? 1.0 : -1.0);
       const NormalForce expected = normal_force(m, gap, radius, mass, u_n);
       ASSERT_EQ(expected.contact, 0.0);
       const double film = grid ? film_force_apart<true>(m.lubrication, gap, radius, mass, u_n, dt, 1.0 / dt)
                                : film_force_apart<false>(m.lubrication, gap, radius, mass, u_n, dt, 1.0 / dt);
-      const Lubrication::Activation al = m.lubrication.activation(radius);
-      const double terms = std::fabs(al.integral) + std::fabs(m.lubrication.integral_saturated) +
-          (std::fabs(al.lambda) + std::fabs(m.lubrication.lambda_saturated)) * (al.eps + 0.1);
-      const double tolerance = 1e-13 * m.lubrication.six_pi_mu * radius.value * radius.value * terms / dt;
-      ASSERT_NEAR(film, expected.lubrication, tolerance)
-          << "eps " << gap / radius.value << " eps_al " << al.eps << " u_n dt / gap " << u_n * dt / gap;
+      ASSERT_NEAR(film, expected.lubrication, film_rounding(m, radius, dt))
+          << "eps " << gap / radius.value << " eps_al " << eps_al << " u_n dt / gap " << u_n * dt / gap;
       if (gap < eps_al * radius.value) ++in_film;
       if (std::fabs(expected.lubrication) * dt >= mass * std::fabs(u_n) * (1.0 - 1e-12)) ++clamped;
       // Beyond eps_al before and after the step the film is exactly zero.
@@ -101,35 +127,25 @@ TEST(FilmApart, EqualsTheFilmOfNormalForce)
 
 // Random exactly integrated pairs, dry and wet, in overlap now and a step ago: where
 // sustained_contact_force says the contact is sustained, contact and energy equal
-// normal_force's and the film does to rounding (both ends saturated: no logarithm of the gap).
+// normal_force's and the film does within film_rounding (both ends saturated).
 TEST(SustainedContact, EqualsNormalForceWhereItApplies)
 {
-  std::mt19937_64 rng(11);
-  auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
-  auto log_uniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, uniform(0.0, 1.0)); };
+  Draw d(11);
   int sustained_count = 0, other_count = 0;
   for (int trial = 0; trial < 400; ++trial) {
     Coefficients c;
-    c.e_dry = log_uniform(1e-3, 1.0);
-    c.n_contact = log_uniform(1.0, 64.0);
+    c.e_dry = d.log_uniform(1e-3, 1.0);
+    c.n_contact = d.log_uniform(1.0, 64.0);
     const bool grid = trial % 3 == 0;
-    if (trial % 4 != 0) {
-      c.viscosity = log_uniform(1e-6, 10.0);
-      c.eps_saturation = log_uniform(1e-6, 0.05);
-      if (grid) c.grid_spacing = log_uniform(1e-6, 1e-1);
-      else c.eps_activation = uniform(1.5 * c.eps_saturation, 1.0);
-      c.eps_release = uniform(-0.1, 0.0);
-    }
+    if (trial % 4 != 0) draw_film(d, grid, c);
     ASSERT_EQ(validate(c), "");
-    const double dt = log_uniform(1e-8, 1e-2);
+    const double dt = d.log_uniform(1e-8, 1e-2);
     const NormalModel m = make_normal_model(c, Partner::particle, dt);
     for (int state = 0; state < 100; ++state) {
-      const double ri = log_uniform(1e-6, 1e-1), rj = ri * log_uniform(0.2, 5.0);
-      const FilmRadius radius = film_radius_pair(ri, rj);
-      const double mass = log_uniform(1e-12, 1.0);
-      const double gap = -radius.value * log_uniform(1e-9, 0.2);
+      const auto [radius, mass] = draw_pair(d);
+      const double gap = -radius.value * d.log_uniform(1e-9, 0.2);
       // Overlap rates from creeping to leaving the overlap within the step, both signs.
-      const double u_n = -gap / dt * log_uniform(1e-6, 3.0) * (state % 2 ? 1.0 : -1.0);
+      const double u_n = -gap / dt * d.log_uniform(1e-6, 3.0) * (state % 2 ? 1.0 : -1.0);
       bool sustained = false;
       const NormalForce vector_form =
           grid ? sustained_contact_force<true>(m, gap, radius, mass, u_n, sustained)
@@ -142,13 +158,7 @@ TEST(SustainedContact, EqualsNormalForceWhereItApplies)
       const NormalForce expected = normal_force(m, gap, radius, mass, u_n);
       ASSERT_DOUBLE_EQ(vector_form.contact, expected.contact);
       ASSERT_DOUBLE_EQ(vector_form.energy, expected.energy);
-      // normal_force takes the film as a difference of film integrals P (sums of terms of
-      // order 1): its rounding is 1e-16 of those terms, however close the two ends.
-      const Lubrication::Activation al = m.lubrication.activation(radius);
-      const double terms = std::fabs(al.integral) + std::fabs(m.lubrication.integral_saturated) +
-          (std::fabs(al.lambda) + std::fabs(m.lubrication.lambda_saturated)) * (al.eps + 0.1);
-      const double tolerance = 1e-13 * m.lubrication.six_pi_mu * radius.value * radius.value * terms / dt;
-      ASSERT_NEAR(vector_form.lubrication, expected.lubrication, tolerance)
+      ASSERT_NEAR(vector_form.lubrication, expected.lubrication, film_rounding(m, radius, dt))
           << "gap " << gap << " u_n dt " << u_n * dt;
     }
   }
