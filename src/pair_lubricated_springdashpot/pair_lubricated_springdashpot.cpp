@@ -509,7 +509,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   // Pass 2: the pairs kept by pass 1 (j kept with them: no second look-up in the neighbor
   // list; jj for the history only).
   double **torque = atom->torque;
-  auto evaluate = [&](const int i, const int j, const int jj) {
+  auto evaluate = [&](const int i, const int j, const int jj) __attribute__((always_inline)) {
     const double delx = x[i][0] - x[j][0];
     const double dely = x[i][1] - x[j][1];
     const double delz = x[i][2] - x[j][2];
