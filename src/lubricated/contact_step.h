@@ -48,6 +48,25 @@ struct ContactStep {
 
 constexpr double min_steps_per_contact = 1.5;
 
+// Gap a step ahead of g1 (g0 a step before it) by the exact two-step recurrence of the damped
+// oscillator, valid while the pair stays in overlap.
+inline double recurrence_gap(const ContactStep &cs, double g1, double g0)
+{
+  return 2.0 * cs.E * cs.C * g1 - cs.E * cs.E * g0;
+}
+
+// Sustained contact: in overlap a step ago and now and, by the recurrence, a step ahead. There
+// (g2 - 2 g1 + g0) / dt^2 is a spring-dashpot with the per-step constants k', c' above (per
+// unit reduced mass: an acceleration, u the normal velocity of the last step).
+inline bool in_sustained_contact(const ContactStep &cs, double g1, double g0)
+{
+  return (g1 < 0.0) & (g0 < 0.0) & (recurrence_gap(cs, g1, g0) < 0.0);
+}
+inline double sustained_acceleration(const ContactStep &cs, double g1, double u)
+{
+  return -(cs.stiffness_step * g1 + cs.damping_step * u);
+}
+
 // A loss at the start of a contact (the wet-restitution calibration of normal_model.h): the
 // oscillator starts at S(v) <= v, v the approach speed. S depends on v alone, so every step
 // reconstructs it from the gaps it sees: no contact history.
@@ -252,7 +271,7 @@ __attribute__((noinline)) inline double contact_acceleration(const ContactStep &
     return (g2 - 2.0 * g1 + g0) / (dt * dt) - kick / dt;
   } else {
     // Sustained contact: the exact two-step recurrence of the damped oscillator.
-    g2 = 2.0 * cs.E * cs.C * g1 - cs.E * cs.E * g0;
+    g2 = recurrence_gap(cs, g1, g0);
     if (g2 >= 0.0 && cs.S > 1e-12) g2 = exit_and_fly(cs, g1, (g1 * cs.C - g0 * cs.E) / cs.S, dt);
   }
   return (g2 - 2.0 * g1 + g0) / (dt * dt);

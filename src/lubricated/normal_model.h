@@ -108,6 +108,13 @@ struct NormalForce {
   double total() const { return contact + lubrication; }
 };
 
+// The film's force over a step from its impulse there: it may stop the relative motion but
+// never reverse it, |impulse| <= m_e |u_n| = limit (lubrication.h, MODEL.md section 3).
+inline double film_force_of_impulse(double impulse, double limit, double inv_dt)
+{
+  return std::max(-limit, std::min(limit, impulse)) * inv_dt;
+}
+
 // Which force evaluation: a step, or the set-up of a run, where velocities are full-step and
 // the integrator applies them in its own way: velocity Verlet half a kick before the first
 // drift, fix nve/sphere/midpoint a shift dt^2/8 F/m of its first half-step drift.
@@ -140,7 +147,7 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
       // steps it telescopes to the exact impulse of the continuous model, whatever dt.
       // It may stop the relative motion but never reverse it: |impulse| <= m_e |u_n|.
       const double impulse = m.lubrication.impulse(gap - u_n * dt, gap, radius);
-      f.lubrication = std::max(-limit, std::min(limit, impulse)) * m.step.inv_dt;
+      f.lubrication = film_force_of_impulse(impulse, limit, m.step.inv_dt);
     } else {
       f.lubrication = -m.lubrication.damping(gap * radius.inverse, radius.value) * u_n;
       // At a run start it may stop the motion over the half kick (dt/2 F/m) or the half drift
@@ -153,10 +160,8 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
   if (m.exact && contact_possible(gap, u_n, m.step.dt)) {
     const ContactStep &cs = m.step;
     const double g0 = gap - u_n * cs.dt;
-    const double g2 = 2.0 * cs.E * cs.C * gap - cs.E * cs.E * g0;
-    if (!at_start && gap < 0.0 && g0 < 0.0 && g2 < 0.0)    // sustained contact, inline:
-      // (g2 - 2 gap + g0) / dt^2 of the recurrence, as a spring-dashpot (contact_step.h)
-      f.contact = -reduced_mass * (cs.stiffness_step * gap + cs.damping_step * u_n);
+    if (!at_start && in_sustained_contact(cs, gap, g0))    // inline: a spring-dashpot
+      f.contact = reduced_mass * sustained_acceleration(cs, gap, u_n);
     else if (when == Evaluation::midpoint_start) {
       // Only places the first drift (the contact and its entry loss act from the next step).
       const double drifted = gap + 0.5 * u_n * cs.dt + 0.125 * cs.dt * cs.dt * f.lubrication / reduced_mass;
@@ -181,7 +186,8 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
 }
 
 // The film force of normal_force() (exact integration, a step) for a pair that stays apart over
-// the step, gap >= 0 and gap - u_n dt >= 0, where no contact can act: without branches or
+// the step, gap >= 0 and gap - u_n dt >= 0, where no contact can act: the film's path integral
+// over the step (MODEL.md section 3, lubrication.h) as a force [force], without branches or
 // calls, for loops over such pairs that the compiler vectorises. Requires an active film;
 // GRID: whether it has a grid spacing (Lubrication::activation_inline).
 template <bool GRID>
@@ -193,13 +199,14 @@ film_force_apart(const Lubrication &lub, double gap, const FilmRadius &radius, d
   const double after = gap * radius.inverse, before = (gap - u_n * dt) * radius.inverse;
   const double impulse = lub.six_pi_mu * radius.value * radius.value *
       (lub.film_integral_inline(after, al) - lub.film_integral_inline(before, al));
-  const double limit = reduced_mass * std::fabs(u_n);
-  return std::max(-limit, std::min(limit, impulse)) * inv_dt;
+  return film_force_of_impulse(impulse, reduced_mass * std::fabs(u_n), inv_dt);
 }
 
 // normal_force() (exact integration, a step) for a pair in sustained contact: in overlap now
-// and a step ago (so its film is saturated, P linear in eps) and, by the oscillator's
-// recurrence, still a step ahead. Without branches or calls, for loops the compiler
+// and a step ago and, by the oscillator's recurrence, still a step ahead (contact_step.h).
+// Its film is saturated there (MODEL.md section 3: held at its eps_1 value, removed below
+// eps_2), so P is linear in eps and the impulse needs no logarithm of the gap. Forces [force],
+// energy k d^2 / 2 [energy]. Without branches or calls, for loops the compiler
 // vectorises; `sustained` says whether the pair is in that state (if not, the result means
 // nothing: take normal_force()). GRID: whether the film has a grid spacing.
 template <bool GRID>
@@ -209,18 +216,16 @@ sustained_contact_force(const NormalModel &m, double gap, const FilmRadius &radi
 {
   const ContactStep &cs = m.step;
   const double g0 = gap - u_n * cs.dt;
-  const double g2 = 2.0 * cs.E * cs.C * gap - cs.E * cs.E * g0;
-  sustained = (gap < 0.0) & (g0 < 0.0) & (g2 < 0.0);
+  sustained = in_sustained_contact(cs, gap, g0);
   NormalForce f;
   f.energy = 0.5 * reduced_mass * m.contact.stiffness_per_mass * gap * gap;
-  f.contact = -reduced_mass * (cs.stiffness_step * gap + cs.damping_step * u_n);
+  f.contact = reduced_mass * sustained_acceleration(cs, gap, u_n);
   const Lubrication &lub = m.lubrication;
   const double lambda_al = lub.activation_inline<GRID>(radius).lambda;
   const double release = lub.eps_release * radius.value;
   const double impulse = lub.six_pi_mu * radius.value * (lub.lambda_saturated - lambda_al) *
       (std::max(g0, release) - std::max(gap, release));
-  const double limit = reduced_mass * std::fabs(u_n);
-  f.lubrication = std::max(-limit, std::min(limit, impulse)) * cs.inv_dt;
+  f.lubrication = film_force_of_impulse(impulse, reduced_mass * std::fabs(u_n), cs.inv_dt);
   return f;
 }
 
