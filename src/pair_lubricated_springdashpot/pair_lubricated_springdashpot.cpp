@@ -342,19 +342,6 @@ static inline bool within_a_step(double rsq, double dv_dot_del, double dt, doubl
   return (s <= 0.0) | (s * s < outer_sq * rsq);
 }
 
-// Force (fx, fy, fz) on i, the opposite on j where this rank owns it (on_j).
-static inline void add_pair_force(double **f, int i, int j, bool on_j, double fx, double fy, double fz)
-{
-  f[i][0] += fx;
-  f[i][1] += fy;
-  f[i][2] += fz;
-  if (on_j) {
-    f[j][0] -= fx;
-    f[j][1] -= fy;
-    f[j][2] -= fz;
-  }
-}
-
 // The vectorised loops (vector_pairs.h) over the film-only list and the kept entries, in
 // chunks that stay in the cache between computing and applying the forces; kept entries
 // where a contact starts or ends go through the general loop, evaluate(i, j, jj). Unless one
@@ -372,7 +359,14 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
   int done[chunk], rest[chunk];
   auto apply = [&](int i, int j, double fij, double eij) {
     const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
-    add_pair_force(f, i, j, newton_pair || j < nlocal, delx * fij, dely * fij, delz * fij);
+    f[i][0] += delx * fij;
+    f[i][1] += dely * fij;
+    f[i][2] += delz * fij;
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= delx * fij;
+      f[j][1] -= dely * fij;
+      f[j][2] -= delz * fij;
+    }
     if (evflag) ev_tally(i, j, nlocal, newton_pair, eij, 0.0, fij, delx, dely, delz);
   };
   // At most one chunk of pairs of one model.
@@ -582,7 +576,14 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
       if (newton_pair || j < nlocal)
         for (int d = 0; d < 3; d++) torque[j][d] += tj[d];
     }
-    add_pair_force(f, i, j, newton_pair || j < nlocal, fx, fy, fz);
+    f[i][0] += fx;
+    f[i][1] += fy;
+    f[i][2] += fz;
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= fx;
+      f[j][1] -= fy;
+      f[j][2] -= fz;
+    }
     if (evflag) {
       if (TANGENTIAL)
         ev_tally_xyz(i, j, nlocal, newton_pair, fn.energy, 0.0, fx, fy, fz, delx, dely, delz);

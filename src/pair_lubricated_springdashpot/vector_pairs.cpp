@@ -77,9 +77,7 @@ namespace vector_pairs {
       const double film =
           WET ? lub::film_force_apart<GRID>(model.lubrication, gap, g.film, g.m_e, g.u_n, dt, inv_dt) : 0.0;
       const bool known = (sustained | apart) & (g.r > 0.0);
-      // Dry: the film part is zero; leaving it out lets the compiler drop its arithmetic.
-      const double normal = WET ? contact.total() : contact.contact;
-      fpair[c] = known ? (sustained ? normal : film) * g.rinv : 0.0;
+      fpair[c] = known ? (sustained ? contact.total() : film) * g.rinv : 0.0;
       energy[c] = known & sustained ? contact.energy : 0.0;
       done[c] = known;
     }
