@@ -19,6 +19,8 @@ than 1e7 particle-steps are repeated three times as often):
                       fix wall/lubrication 0.9 ncontact 8
   plugin wet          the same with viscosity 1e-3 activation 0.09375 (pair and wall)
   plugin dry sampled  for information: the force sampled once per step (integration sampled)
+  plugin wet limit pair  for information: wet without the many-body film budget (the cost of
+                      the budget is plugin wet / plugin wet limit pair)
 
 All styles: e = 0.9, t_c = 8 dt, dt = 2e-5 s, fix nve/sphere, neighbor 0.0005 bin (skin R/2),
 neigh_modify delay 0 every 1 check yes, comm_modify vel yes.
@@ -159,6 +161,8 @@ def styles():
                        f"fix floor all wall/lubrication {plugin} zplane 0.0 NULL"),
         "plugin wet": (f"pair_style lubricated/springdashpot\npair_coeff * * {plugin} {WET}",
                        f"fix floor all wall/lubrication {plugin} {WET} zplane 0.0 NULL"),
+        "plugin wet limit pair": (f"pair_style lubricated/springdashpot limit pair\npair_coeff * * {plugin} {WET}",
+                                  f"fix floor all wall/lubrication {plugin} {WET} zplane 0.0 NULL"),
         "plugin dry sampled": (f"pair_style lubricated/springdashpot\npair_coeff * * {plugin} integration sampled",
                                f"fix floor all wall/lubrication {plugin} integration sampled zplane 0.0 NULL"),
     }

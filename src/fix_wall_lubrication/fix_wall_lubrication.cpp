@@ -9,11 +9,14 @@
 #include "fix_wall_lubrication.h"
 
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
+#include "lubricated/film_budget.h"
+#include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
 
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "force.h"
 #include "memory.h"
 #include "modify.h"
 #include "update.h"
@@ -96,7 +99,7 @@ FixWallLubrication::~FixWallLubrication()
 
 int FixWallLubrication::setmask()
 {
-  return POST_FORCE | MIN_POST_FORCE;
+  return PRE_FORCE | POST_FORCE | MIN_POST_FORCE;
 }
 
 void FixWallLubrication::init()
@@ -117,6 +120,8 @@ void FixWallLubrication::init()
   midpoint = nullptr;
   for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
     midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
+  pair = dynamic_cast<PairLubricatedSpringDashpot *>(force->pair_match("lubricated/springdashpot", 1));
+  films_pending = false;
 }
 
 // k = m (pi^2 + ln^2 e_d) / (N_c dt)^2 follows the time step when N_c is given.
@@ -126,22 +131,64 @@ void FixWallLubrication::reset_dt()
   tmodel = lub::make_tangential_model(coeffs, update->dt);
 }
 
-void FixWallLubrication::setup(int vflag)
+void FixWallLubrication::setup_pre_force(int /*vflag*/)
 {
-  post_force(vflag);
+  if (update->whichflag == 1) compute_walls(true);
 }
 
-void FixWallLubrication::min_setup(int vflag)
+void FixWallLubrication::pre_force(int /*vflag*/)
 {
-  post_force(vflag);
+  compute_walls(true);
 }
 
-void FixWallLubrication::min_post_force(int vflag)
+void FixWallLubrication::setup(int /*vflag*/)
 {
-  post_force(vflag);
+  apply_films();
 }
 
 void FixWallLubrication::post_force(int /*vflag*/)
+{
+  apply_films();
+}
+
+// Minimisation: the walls in one go, films as each contact's own cap leaves them.
+void FixWallLubrication::min_setup(int /*vflag*/)
+{
+  compute_walls(false);
+}
+
+void FixWallLubrication::min_post_force(int /*vflag*/)
+{
+  compute_walls(false);
+}
+
+void FixWallLubrication::add_film_loads(double *load, int nlocal) const
+{
+  if (!films_pending) return;
+  for (int i = 0; i < nlocal; i++) load[i] += film_load[i];
+}
+
+// The deferred wall films, scaled by the atoms' film budget: the pair style's where it keeps
+// one (its loads include these walls), this fix's own without a lubricated pair style, none
+// under `limit pair`.
+void FixWallLubrication::apply_films()
+{
+  if (!films_pending) return;
+  films_pending = false;
+  double **f = atom->f;
+  const int nlocal = atom->nlocal;
+  const bool by_pair = pair && pair->keeps_film_budget();
+  const bool own = !pair;
+  for (int i = 0; i < nlocal; i++) {
+    if (film_force[i] == 0.0) continue;
+    const double scale = by_pair ? pair->film_scale(i) : own ? lub::film_scale_of_load(film_load[i]) : 1.0;
+    const double force = scale * film_force[i];
+    f[i][axis] += force;
+    local_sums[1 + axis] += force;
+  }
+}
+
+void FixWallLubrication::compute_walls(bool defer_films)
 {
   double **x = atom->x;
   double **v = atom->v;
@@ -155,6 +202,13 @@ void FixWallLubrication::post_force(int /*vflag*/)
 
   for (double &s : local_sums) s = 0.0;
   sums_reduced = false;
+  films_pending = defer_films = defer_films && model.lubrication.active();
+  if (defer_films) {
+    film_force.assign(nlocal, 0.0);
+    film_load.assign(nlocal, 0.0);
+  }
+  const double kick_time = lub::film_kick_time(update->dt, when != lub::Evaluation::step,
+                                               when == lub::Evaluation::midpoint_start);
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -172,7 +226,12 @@ void FixWallLubrication::post_force(int /*vflag*/)
         continue;
       }
       const lub::NormalForce fn = lub::normal_force(model, gap, r, rmass[i], u_n, when);
-      const double force = side * fn.total();
+      double force = side * fn.total();
+      if (defer_films) {    // applied in post_force, within the atom's film budget
+        force = side * fn.contact;
+        film_force[i] += side * fn.lubrication;
+        film_load[i] += lub::film_share(fn.lubrication, rmass[i], u_n, kick_time);
+      }
       f[i][axis] += force;
       local_sums[0] += fn.energy;
       local_sums[1 + axis] += force;

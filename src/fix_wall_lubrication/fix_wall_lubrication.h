@@ -12,6 +12,8 @@
 #include "lubricated/normal_model.h"
 #include "lubricated/tangential.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class FixWallLubrication : public Fix {
@@ -21,8 +23,10 @@ class FixWallLubrication : public Fix {
 
   int setmask() override;
   void init() override;
+  void setup_pre_force(int) override;
   void setup(int) override;
   void min_setup(int) override;
+  void pre_force(int) override;
   void post_force(int) override;
   void min_post_force(int) override;
   void reset_dt() override;
@@ -41,6 +45,11 @@ class FixWallLubrication : public Fix {
   int maxsize_restart() override;
   double memory_usage() override;
 
+  bool wet() const { return coeffs.wet(); }
+  // Adds this step's wall-film shares to the owned atoms' loads of the many-body film budget
+  // (lubricated/film_budget.h; pair_style lubricated/springdashpot sums them with its own).
+  void add_film_loads(double *load, int nlocal) const;
+
  protected:
   lubricated::Coefficients coeffs;
   lubricated::NormalModel model;
@@ -58,6 +67,14 @@ class FixWallLubrication : public Fix {
   double global_sums[4] = {0.0, 0.0, 0.0, 0.0};
   bool sums_reduced = false;
   class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
+  // A run computes the walls in pre_force, before the pair style, and applies their films in
+  // post_force, scaled by the atoms' film budget: per owned atom, the wall films' force along
+  // the axis and their summed share (valid while films_pending).
+  class PairLubricatedSpringDashpot *pair = nullptr;
+  std::vector<double> film_force, film_load;
+  bool films_pending = false;
+  void compute_walls(bool defer_films);
+  void apply_films();
 };
 
 }    // namespace LAMMPS_NS

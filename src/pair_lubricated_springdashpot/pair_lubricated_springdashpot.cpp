@@ -7,6 +7,8 @@
 
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
+#include "fix_wall_lubrication/fix_wall_lubrication.h"
+#include "lubricated/film_budget.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -37,6 +39,7 @@ PairLubricatedSpringDashpot::PairLubricatedSpringDashpot(LAMMPS *lmp) : Pair(lmp
   svector = new double[single_extra];
   finitecutflag = 1;
   restartinfo = 1;
+  comm_forward = comm_reverse = 1;    // the film budget: scales forward, loads reverse
 }
 
 PairLubricatedSpringDashpot::~PairLubricatedSpringDashpot()
@@ -65,26 +68,35 @@ void PairLubricatedSpringDashpot::allocate()
   maxrad.assign(n + 1, 0.0);
 }
 
-// pair_style lubricated/springdashpot [vector yes|no]
+// pair_style lubricated/springdashpot [vector yes|no] [limit atom|pair]
 void PairLubricatedSpringDashpot::settings(int narg, char **arg)
 {
   vector_enabled = true;
+  limit_per_atom = true;
   for (int iarg = 0; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
-    if (key != "vector")
-      error->all(FLERR, "{}: unknown keyword '{}' (allowed: vector yes|no; coefficients go in "
-                 "pair_coeff)", STYLE, key);
-    if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword vector needs a value (yes or no)", STYLE);
+    if (key != "vector" && key != "limit")
+      error->all(FLERR, "{}: unknown keyword '{}' (allowed: vector yes|no, limit atom|pair; "
+                 "coefficients go in pair_coeff)", STYLE, key);
+    const char *allowed = key == "vector" ? "yes or no" : "atom or pair";
+    if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value ({})", STYLE, key, allowed);
     const std::string value = arg[iarg + 1];
-    if (value != "yes" && value != "no")
-      error->all(FLERR, "{}: vector = {} is not allowed (yes or no)", STYLE, value);
-    vector_enabled = value == "yes";
+    if (key == "vector") {
+      if (value != "yes" && value != "no")
+        error->all(FLERR, "{}: vector = {} is not allowed (yes or no)", STYLE, value);
+      vector_enabled = value == "yes";
+    } else {
+      if (value != "atom" && value != "pair")
+        error->all(FLERR, "{}: limit = {} is not allowed (atom or pair)", STYLE, value);
+      limit_per_atom = value == "atom";
+    }
   }
 }
 
+// One int: bit 0 vector no, bit 1 limit pair (files written before `limit` read as atom).
 void PairLubricatedSpringDashpot::write_restart_settings(FILE *fp)
 {
-  const int flag = vector_enabled ? 1 : 0;
+  const int flag = (vector_enabled ? 1 : 0) | (limit_per_atom ? 0 : 2);
   fwrite(&flag, sizeof(int), 1, fp);
 }
 
@@ -93,7 +105,8 @@ void PairLubricatedSpringDashpot::read_restart_settings(FILE *fp)
   int flag = 1;
   if (comm->me == 0) utils::sfread(FLERR, &flag, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&flag, 1, MPI_INT, 0, world);
-  vector_enabled = flag != 0;
+  vector_enabled = (flag & 1) != 0;
+  limit_per_atom = (flag & 2) == 0;
 }
 
 // pair_coeff I J e_d [ncontact N | tcontact t_c] [viscosity mu_f] [activation eps_al | grid dx]
@@ -189,6 +202,21 @@ void PairLubricatedSpringDashpot::init_style()
     utils::logmesg(lmp, "{}: pairs in sustained contact{} take vectorised loops\n", STYLE,
                    any_wet ? " and pairs apart over a step" : "");
 
+  // The many-body film budget covers the films of these pairs and of the wet walls.
+  walls.clear();
+  bool wet_walls = false;
+  for (auto &ifix : modify->get_fix_by_style("^wall/lubrication$")) {
+    auto wall = dynamic_cast<FixWallLubrication *>(ifix);
+    if (!wall) continue;
+    walls.push_back(wall);
+    wet_walls = wet_walls || wall->wet();
+  }
+  film_budget = limit_per_atom && (any_wet || wet_walls);
+  if (!film_budget) scale_of_atom.clear();
+  if ((any_wet || wet_walls) && comm->me == 0)
+    utils::logmesg(lmp, "{}: {}\n", STYLE, film_budget ? "films within each sphere's many-body budget (limit atom)"
+                                                       : "each film within its own cap only (limit pair)");
+
   // A dry model acts only in contact: a radius-based list is enough and cheapest. The film
   // acts beyond contact, where radius-based lists lose pairs on rebuild (LAMMPS PR #4685),
   // so a wet model asks for a list with per-type cutoffs that cover the whole film.
@@ -266,6 +294,7 @@ void PairLubricatedSpringDashpot::reset_dt()
 void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  if (film_budget) begin_film_budget();
   // A scene pays only for what it uses: one loop per combination.
   if (any_tangential) {
     if (any_wet) eval<true, true>();
@@ -276,7 +305,89 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
     if (any_wet) vectorised ? eval<true, false, true>() : eval<true, false>();
     else vectorised ? eval<false, false, true>() : eval<false, false>();
   }
+  if (film_budget) finish_film_budget();
   if (vflag_fdotr) virial_fdotr_compute();
+}
+
+// Loads start from the walls' films (computed in their pre_force) for owned atoms, 0 elsewhere.
+void PairLubricatedSpringDashpot::begin_film_budget()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  if (static_cast<int>(load_of_atom.size()) < nall) {
+    load_of_atom.resize(atom->nmax);
+    scale_of_atom.resize(atom->nmax);
+  }
+  std::fill(load_of_atom.begin(), load_of_atom.begin() + nall, 0.0);
+  for (auto wall : walls) wall->add_film_loads(load_of_atom.data(), nlocal);
+  nrecord = 0;
+}
+
+void PairLubricatedSpringDashpot::reserve_records(int more)
+{
+  if (nrecord + more <= static_cast<int>(record_i.size())) return;
+  const int size = 2 * (nrecord + more);
+  record_i.resize(size);
+  record_j.resize(size);
+  record_force.resize(size);
+}
+
+// Loads summed on the owners, scales sent to the ghosts, then every film whose atoms are over
+// budget is scaled down by 1 / max(1, D_i, D_j) (lubricated/film_budget.h).
+void PairLubricatedSpringDashpot::finish_film_budget()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const int newton_pair = force->newton_pair;
+  if (newton_pair) {
+    comm_what = COMM_LOAD;
+    comm->reverse_comm(this);
+  }
+  double *load = load_of_atom.data(), *scale = scale_of_atom.data();
+  for (int i = 0; i < nlocal; i++) scale[i] = lub::film_scale_of_load(load[i]);
+  comm_what = COMM_SCALE;
+  comm->forward_comm(this);
+  bool over = false;
+  for (int k = 0; k < nall; k++) over |= scale[k] < 1.0;
+  if (!over) return;
+  double **x = atom->x, **f = atom->f;
+  for (int r = 0; r < nrecord; r++) {
+    const int i = record_i[r], j = record_j[r];
+    const double s = std::min(scale[i], scale[j]);
+    if (s == 1.0) continue;
+    const double fpair = (s - 1.0) * record_force[r];
+    const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+    f[i][0] += delx * fpair;
+    f[i][1] += dely * fpair;
+    f[i][2] += delz * fpair;
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= delx * fpair;
+      f[j][1] -= dely * fpair;
+      f[j][2] -= delz * fpair;
+    }
+    if (evflag) ev_tally(i, j, nlocal, newton_pair, 0.0, 0.0, fpair, delx, dely, delz);
+  }
+}
+
+int PairLubricatedSpringDashpot::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
+                                                   int * /*pbc*/)
+{
+  for (int k = 0; k < n; k++) buf[k] = scale_of_atom[list[k]];
+  return n;
+}
+
+void PairLubricatedSpringDashpot::unpack_forward_comm(int n, int first, double *buf)
+{
+  for (int k = 0; k < n; k++) scale_of_atom[first + k] = buf[k];
+}
+
+int PairLubricatedSpringDashpot::pack_reverse_comm(int n, int first, double *buf)
+{
+  for (int k = 0; k < n; k++) buf[k] = load_of_atom[first + k];
+  return n;
+}
+
+void PairLubricatedSpringDashpot::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  for (int k = 0; k < n; k++) load_of_atom[list[k]] += buf[k];
 }
 
 // Tangential force ft on i (on j: -ft) and the torques ti, tj of one pair (tangential.h);
@@ -355,8 +466,9 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
   const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
   const vector_pairs::Atoms atoms{x[0], atom->v[0], atom->radius, atom->rmass};
   constexpr int chunk = 256;
-  double fpair[chunk], energy[chunk];
+  double fpair[chunk], energy[chunk], film[chunk], share[chunk];
   int done[chunk], rest[chunk];
+  const bool budget = film_budget;
   auto apply = [&](int i, int j, double fij, double eij) {
     const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
     f[i][0] += delx * fij;
@@ -371,11 +483,17 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
   };
   // At most one chunk of pairs of one model.
   auto film_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
-    vector_pairs::film_only(atoms, model, pair_i, pair_j, n, fpair);
+    vector_pairs::film_only(atoms, model, pair_i, pair_j, n, fpair, share);
     for (int c = 0; c < n; c++) apply(pair_i[c], pair_j[c], fpair[c], 0.0);
+    if (budget)
+      for (int c = 0; c < n; c++)
+        record_film(pair_i[c], pair_j[c], fpair[c], share[c], nlocal, newton_pair);
   };
   auto kept_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
-    vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, fpair, energy, done);
+    vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+    if (budget && model.lubrication.active())
+      for (int c = 0; c < n; c++)
+        record_film(pair_i[c], pair_j[c], film[c], share[c], nlocal, newton_pair);
     int nrest = 0;
     for (int c = 0; c < n; c++) {
       // Branch-free (which pairs are done follows no pattern): the others have fpair = 0 here
@@ -509,6 +627,10 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   // Pass 2: the pairs kept by pass 1 (j kept with them: no second look-up in the neighbor
   // list; jj for the history only).
   double **torque = atom->torque;
+  const bool budget = WET && film_budget;
+  if (budget) reserve_records(ncandidate + nfilm);
+  const double kick_time = lub::film_kick_time(dt, when != lub::Evaluation::step,
+                                               when == lub::Evaluation::midpoint_start);
   auto evaluate = [&](const int i, const int j, const int jj) __attribute__((always_inline)) {
     const double delx = x[i][0] - x[j][0];
     const double dely = x[i][1] - x[j][1];
@@ -562,6 +684,9 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
 
     const double fpair = fn.total() * rinv;
     double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
+    if (budget)
+      record_film(i, j, fn.lubrication * rinv, lub::film_share(fn.lubrication, m_e, u_n, kick_time), nlocal,
+                  newton_pair);
     if (TANGENTIAL) {
       double ft[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0}, tj[3] = {0.0, 0.0, 0.0};
       // The slip uses the engine's velocities (under the midpoint integrator: V~, not the
@@ -665,7 +790,9 @@ double PairLubricatedSpringDashpot::memory_usage()
   return Pair::memory_usage() + coeffs.size() * sizeof(lub::Coefficients) +
       models.size() * sizeof(lub::NormalModel) +
       (candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity() +
-       film_i.capacity() + film_j.capacity() + group_count.capacity() + group_keys.capacity()) *
+       film_i.capacity() + film_j.capacity() + group_count.capacity() + group_keys.capacity() +
+       record_i.capacity() + record_j.capacity()) *
           sizeof(int) +
-      step_reach.capacity() * sizeof(double);
+      (step_reach.capacity() + load_of_atom.capacity() + scale_of_atom.capacity() + record_force.capacity()) *
+          sizeof(double);
 }

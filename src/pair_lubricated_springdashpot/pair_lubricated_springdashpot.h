@@ -36,6 +36,15 @@ class PairLubricatedSpringDashpot : public Pair {
   void read_restart(FILE *) override;
   double single(int, int, int, int, double, double, double, double &) override;
   double memory_usage() override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+
+  // The many-body film budget (lubricated/film_budget.h) of this step, for fix wall/lubrication:
+  // whether the pair style keeps it (the walls' loads included), and an owned atom's film scale.
+  bool keeps_film_budget() const { return film_budget; }
+  double film_scale(int i) const { return scale_of_atom[i]; }
 
  protected:
   std::vector<lubricated::Coefficients> coeffs;    // per type pair, (ntypes+1)^2
@@ -60,6 +69,31 @@ class PairLubricatedSpringDashpot : public Pair {
   bool vector_loops = false;
   std::vector<int> film_i, film_j;
   std::vector<int> group_count, group_keys;    // grouping a chunk by type pair
+
+  // Many-body film budget (`limit atom`, the default; `limit pair`: each pair's own cap only).
+  // Per owned and ghost atom: the summed film share and its scale; per pair with a film: i, j
+  // and the film force / r, applied in full by the loops and scaled down afterwards.
+  bool limit_per_atom = true;
+  bool film_budget = false;
+  std::vector<class FixWallLubrication *> walls;    // their films share the atoms' budget
+  std::vector<double> load_of_atom, scale_of_atom;
+  std::vector<int> record_i, record_j;
+  std::vector<double> record_force;
+  int nrecord = 0;
+  enum { COMM_LOAD, COMM_SCALE } comm_what = COMM_LOAD;
+  void begin_film_budget();
+  void reserve_records(int more);
+  __attribute__((always_inline)) inline void record_film(int i, int j, double film_over_r, double share,
+                                                         int nlocal, int newton_pair)
+  {
+    load_of_atom[i] += share;
+    if (newton_pair || j < nlocal) load_of_atom[j] += share;
+    record_i[nrecord] = i;
+    record_j[nrecord] = j;
+    record_force[nrecord] = film_over_r;
+    nrecord += film_over_r != 0.0;
+  }
+  void finish_film_budget();
 
   void allocate();
   int ntypes_alloc = 0;

@@ -49,21 +49,23 @@ namespace vector_pairs {
   template <bool GRID>
   __attribute__((always_inline)) static inline void film_only_loop(
       const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
-      const int *__restrict pair_j, int n, double *__restrict fpair)
+      const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict share)
   {
     const double dt = model.step.dt, inv_dt = model.step.inv_dt;
     for (int c = 0; c < n; c++) {
       const Geometry g = geometry(atoms, pair_i[c], pair_j[c]);
-      fpair[c] = g.rinv * lub::film_force_apart<GRID>(model.lubrication, g.r - g.radsum, g.film, g.m_e,
+      const double film = lub::film_force_apart<GRID>(model.lubrication, g.r - g.radsum, g.film, g.m_e,
                                                       g.u_n, dt, inv_dt);
+      fpair[c] = g.rinv * film;
+      share[c] = lub::film_share(film, g.m_e, g.u_n, dt);
     }
   }
 
   template <bool WET, bool GRID>
   __attribute__((always_inline)) static inline void contact_or_film_loop(
       const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
-      const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict energy,
-      int *__restrict done)
+      const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_part,
+      double *__restrict share, double *__restrict energy, int *__restrict done)
   {
     const double dt = model.step.dt, inv_dt = model.step.inv_dt;
     for (int c = 0; c < n; c++) {
@@ -78,6 +80,9 @@ namespace vector_pairs {
           WET ? lub::film_force_apart<GRID>(model.lubrication, gap, g.film, g.m_e, g.u_n, dt, inv_dt) : 0.0;
       const bool known = (sustained | apart) & (g.r > 0.0);
       fpair[c] = known ? (sustained ? contact.total() : film) * g.rinv : 0.0;
+      const double film_known = WET & known ? (sustained ? contact.lubrication : film) : 0.0;
+      film_part[c] = film_known * g.rinv;
+      share[c] = WET ? lub::film_share(film_known, g.m_e, g.u_n, dt) : 0.0;
       energy[c] = known & sustained ? contact.energy : 0.0;
       done[c] = known;
     }
@@ -85,20 +90,26 @@ namespace vector_pairs {
 
   VECTOR_PAIRS_CLONES
   void film_only(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
-                 const int *pair_j, int n, double *fpair)
+                 const int *pair_j, int n, double *fpair, double *share)
   {
-    if (model.lubrication.grid_spacing > 0.0) film_only_loop<true>(atoms, model, pair_i, pair_j, n, fpair);
-    else film_only_loop<false>(atoms, model, pair_i, pair_j, n, fpair);
+    if (model.lubrication.grid_spacing > 0.0)
+      film_only_loop<true>(atoms, model, pair_i, pair_j, n, fpair, share);
+    else
+      film_only_loop<false>(atoms, model, pair_i, pair_j, n, fpair, share);
   }
 
   VECTOR_PAIRS_CLONES
   void contact_or_film(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
-                       const int *pair_j, int n, double *fpair, double *energy, int *done)
+                       const int *pair_j, int n, double *fpair, double *film, double *share,
+                       double *energy, int *done)
   {
     const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
-    if (!wet) contact_or_film_loop<false, false>(atoms, model, pair_i, pair_j, n, fpair, energy, done);
-    else if (grid) contact_or_film_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, energy, done);
-    else contact_or_film_loop<true, false>(atoms, model, pair_i, pair_j, n, fpair, energy, done);
+    if (!wet)
+      contact_or_film_loop<false, false>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+    else if (grid)
+      contact_or_film_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+    else
+      contact_or_film_loop<true, false>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
   }
 
 }    // namespace vector_pairs

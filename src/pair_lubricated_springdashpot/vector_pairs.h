@@ -10,6 +10,7 @@
 #ifndef LMP_LUBRICATED_VECTOR_PAIRS_H
 #define LMP_LUBRICATED_VECTOR_PAIRS_H
 
+#include "lubricated/film_budget.h"
 #include "lubricated/normal_model.h"
 
 namespace LAMMPS_NS {
@@ -21,17 +22,20 @@ namespace vector_pairs {
   };
 
   // The pairs (pair_i[c], pair_j[c]), c < n, all of model `model` (exact integration, a step).
-  // fpair[c] = force / r: the force on i is fpair (x_i - x_j), on j the opposite.
+  // fpair[c] = force / r: the force on i is fpair (x_i - x_j), on j the opposite; film[c] its
+  // film part and share[c] its share of each atom's many-body film budget
+  // (lubricated/film_budget.h).
 
   // Pairs apart by more than both atoms move in the step, with an active film.
   void film_only(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
-                 const int *pair_j, int n, double *fpair);
+                 const int *pair_j, int n, double *fpair, double *share);
 
   // Pairs that may touch within the step: done[c] = 1 where pair c is in sustained contact or
   // stays apart over the step (the film alone), with its fpair and spring energy[c]; 0 where
   // a contact starts or ends, for the general loop (fpair, energy 0).
   void contact_or_film(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
-                       const int *pair_j, int n, double *fpair, double *energy, int *done);
+                       const int *pair_j, int n, double *fpair, double *film, double *share,
+                       double *energy, int *done);
 
 }    // namespace vector_pairs
 }    // namespace LAMMPS_NS

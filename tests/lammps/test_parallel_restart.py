@@ -4,6 +4,7 @@ give the same trajectories.
 Relative tolerance 1e-10 (the issue's): the ranks only reorder floating-point sums (and the
 vectorised loops evaluate the logarithm inline, within a few units in the last place).
 """
+import re
 import pytest
 
 import scenes
@@ -146,6 +147,21 @@ def test_vector_setting_survives_a_restart(lmp):
     lmp(chain(steps=10, extra_run="write_restart mid.restart"))
     lmp(continue_from_restart("fix nve all nve/sphere"), name="in.restart")
     assert "take vectorised loops" in lmp.log
+
+
+def test_limit_setting_survives_a_restart(lmp):
+    """`limit pair` is stored in the restart file with `vector` (one flag word)."""
+    wet = "pair_coeff * * 0.9 ncontact 8 viscosity 1e-3 activation 0.1"
+    script = chain(steps=10, extra_run="write_restart mid.restart").replace(
+        "pair_style lubricated/springdashpot", "pair_style lubricated/springdashpot vector no limit pair")
+    script = re.sub(r"pair_coeff \* \* .*", wet, script)
+    lmp(script)
+    assert "(limit pair)" in lmp.log
+    lmp(continue_from_restart("fix nve all nve/sphere"), name="in.restart")
+    assert "(limit pair)" in lmp.log and "take vectorised loops" not in lmp.log
+    lmp(re.sub(r"pair_coeff \* \* .*", wet, chain(steps=10, extra_run="write_restart mid.restart")))
+    lmp(continue_from_restart("fix nve all nve/sphere"), name="in.restart")
+    assert "(limit atom)" in lmp.log and "take vectorised loops" in lmp.log
 
 
 def thermo_rows(log):
