@@ -99,7 +99,7 @@ FixWallLubrication::~FixWallLubrication()
 
 int FixWallLubrication::setmask()
 {
-  return PRE_FORCE | POST_FORCE | MIN_POST_FORCE;
+  return (coeffs.wet() ? PRE_FORCE : 0) | POST_FORCE | MIN_POST_FORCE;
 }
 
 void FixWallLubrication::init()
@@ -121,6 +121,10 @@ void FixWallLubrication::init()
   for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
     midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
   pair = dynamic_cast<PairLubricatedSpringDashpot *>(force->pair_match("lubricated/springdashpot", 1));
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && !(atom->radius[i] > 0.0))
+      error->one(FLERR, "{}: atom {} has diameter {} (allowed: > 0; a point particle has no contact "
+                 "or film)", STYLE, atom->tag[i], 2.0 * atom->radius[i]);
   films_pending = false;
 }
 
@@ -131,24 +135,28 @@ void FixWallLubrication::reset_dt()
   tmodel = lub::make_tangential_model(coeffs, update->dt);
 }
 
+// A wet wall is computed before the pair style, its films applied after it (within the
+// budget); a dry wall has no film and is computed after the pair style as it always was.
 void FixWallLubrication::setup_pre_force(int /*vflag*/)
 {
-  if (update->whichflag == 1) compute_walls(true);
+  if (update->whichflag == 1 && model.lubrication.active()) compute_walls(true);
 }
 
 void FixWallLubrication::pre_force(int /*vflag*/)
 {
-  compute_walls(true);
+  if (model.lubrication.active()) compute_walls(true);
 }
 
 void FixWallLubrication::setup(int /*vflag*/)
 {
-  apply_films();
+  if (model.lubrication.active()) apply_films();
+  else compute_walls(false);
 }
 
 void FixWallLubrication::post_force(int /*vflag*/)
 {
-  apply_films();
+  if (model.lubrication.active()) apply_films();
+  else compute_walls(false);
 }
 
 // Minimisation: the walls in one go, films as each contact's own cap leaves them.

@@ -222,6 +222,13 @@ void PairLubricatedSpringDashpot::init_style()
   // so a wet model asks for a list with per-type cutoffs that cover the whole film.
   neighbor->add_request(this, any_wet ? NeighConst::REQ_DEFAULT : NeighConst::REQ_SIZE);
 
+  // A point particle (diameter 0) has no contact surface and no film (R = 0 in 1/eps):
+  // refused at each run setup rather than evaluated as NaN.
+  for (int i = 0; i < atom->nlocal; i++)
+    if (!(atom->radius[i] > 0.0))
+      error->one(FLERR, "{}: atom {} has diameter {} (allowed: > 0; a point particle has no contact "
+                 "or film)", STYLE, atom->tag[i], 2.0 * atom->radius[i]);
+
   // Largest radius per type: atoms present now, and those fix pour/deposit may insert.
   std::vector<double> local(n + 1, 0.0);
   for (int i = 0; i < atom->nlocal; i++)

@@ -53,6 +53,12 @@ CASES = {
     "pair_style_limit_missing": (script().replace("pair_style lubricated/springdashpot",
                                                   "pair_style lubricated/springdashpot vector yes limit"),
                                  ["keyword limit needs a value"]),
+    "point_particle": (script(extra_before_run="set atom 1 diameter 0.0"),
+                       ["atom 1 has diameter 0", "allowed: > 0"]),
+    "wall_point_particle": (script(pair_coeff="pair_coeff * *", fix="fix w all wall/lubrication 0.9 zplane 0.0 NULL",
+                                   extra_before_run="set atom 1 diameter 0.0").replace(
+                                "pair_style lubricated/springdashpot", "pair_style zero 0.001"),
+                            ["Fix wall/lubrication: atom 1 has diameter 0"]),
     "wrong_atom_style": (script(atom_style="atomic"), ["requires atom_style sphere"]),
     "no_ghost_velocity": (script().replace("comm_modify vel yes", ""), ["comm_modify vel yes"]),
     "tcontact_below_dt": (script("pair_coeff * * 0.9 tcontact 1e-6"), ["tcontact", "N_c = t_c / dt >= 1"]),
