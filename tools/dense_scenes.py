@@ -1,0 +1,74 @@
+"""Dense wet scenes for the many-body film tests (issue 17). SI units, rho_p = 2500 kg/m^3.
+
+fcc(): 256 spheres of radius R = 1 mm on an fcc lattice whose nearest-neighbour gaps
+(gap_ratio * 2R) all lie inside the film (activation 0.1), random velocities of rms `speed`
+(zero momentum), no gravity, periodic. cluster(): one sphere and its 12 fcc neighbours.
+St = (2/9) rho_p R u / mu_f with u = speed. Thermo rows: step atoms ke erotate pe etotal.
+"""
+RHO = 2500.0
+R = 1.0e-3
+SPEED = 0.01
+
+HEADER = """plugin load ${plugin}
+units si
+atom_style sphere
+atom_modify map array
+boundary p p p
+comm_modify vel yes
+newton on
+"""
+
+TAIL = """pair_style lubricated/springdashpot limit {limit}
+pair_coeff * * 0.9 ncontact 8 viscosity {mu} activation 0.1 {extra}
+neighbor {skin} bin
+neigh_modify delay 0 every 1 check yes
+fix nve all nve/sphere
+timestep {dt}
+compute rot all erotate/sphere
+variable e equal ke+c_rot+pe
+thermo_style custom step atoms ke c_rot pe v_e
+thermo_modify lost error norm no format float %.17g
+thermo {every}
+run {steps}
+print "RESULT final $(v_e:%.17g) $(atoms)"
+"""
+
+
+def stokes(mu, speed=SPEED):
+    return 2.0 / 9.0 * RHO * R * speed / mu
+
+
+def fcc(mu, dt, steps=1000, every=10, gap_ratio=0.001, limit="atom", extra="", seed=4821, cells=4):
+    a = 2.0 * R * (1.0 + gap_ratio) * 2 ** 0.5
+    mass = RHO * 4.0 / 3.0 * 3.141592653589793 * R ** 3
+    n = 4 * cells ** 3
+    return HEADER + f"""lattice fcc {a!r}
+region box block 0 {cells} 0 {cells} 0 {cells}
+create_box 1 box
+create_atoms 1 box
+set group all diameter {2 * R!r} density {RHO}
+velocity all create 1.0 {seed} dist gaussian mom yes rot no
+velocity all scale {mass * SPEED ** 2 / 3.0 / 1.380649e-23 * n / (n - 1)!r}
+""" + TAIL.format(limit=limit, mu=mu, extra=extra, skin=0.2 * R, dt=dt, every=every, steps=steps)
+
+
+def cluster(mu, dt, steps=1000, every=10, gap_ratio=0.001, limit="atom", extra=""):
+    """One sphere and its 12 fcc neighbours (gaps in the film), the centre moving at SPEED."""
+    a = 2.0 * R * (1.0 + gap_ratio) * 2 ** 0.5
+    return HEADER.replace("boundary p p p", "boundary f f f") + f"""lattice fcc {a!r}
+region box block -3 3 -3 3 -3 3
+create_box 1 box
+region ball sphere 0 0 0 0.75
+create_atoms 1 region ball
+set group all diameter {2 * R!r} density {RHO}
+group centre id 7
+velocity all set 0 0 0
+velocity centre set {SPEED} {0.6 * SPEED} {0.3 * SPEED}
+""" + TAIL.format(limit=limit, mu=mu, extra=extra, skin=0.2 * R, dt=dt, every=every, steps=steps)
+
+
+def energies(log):
+    """The thermo rows' total energy (ke + rotational + spring) and atom counts."""
+    rows = [line.split() for line in log.splitlines()]
+    rows = [r for r in rows if len(r) == 6 and r[0].isdigit()]
+    return [float(r[5]) for r in rows], [int(r[1]) for r in rows]
