@@ -50,9 +50,11 @@ bench-liggghts: setup-liggghts build
 liggghts-demo: setup-liggghts build
 	$(PY) examples/liggghts/st_sweep.py --out $(BUILD)/liggghts-demo
 
-# Restitution error against run time and stability over N_c, dt and integrator.
+# Restitution error against run time and stability over N_c, dt and integrator; dense wet beds
+# before and after the many-body film budget.
 report: build
 	$(PY) bench/restitution_report.py --out $(BUILD)/report
+	$(PY) bench/dense_bed_report.py --out $(BUILD)/report
 
 # The 2133-sphere fluidised bed on 2 MPI ranks: dumps and a solid-fraction profile.
 fluidized-bed: build
