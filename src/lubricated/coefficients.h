@@ -17,12 +17,12 @@ namespace lubricated {
 
 struct Coefficients {
   double e_dry = -1.0;              // dry restitution e_d, 0 < e_d <= 1
-  double n_contact = 8.0;           // contact duration in steps (used when t_contact == 0)
+  double n_contact = 8.0;           // contact duration in steps, 1...1e6 (used when t_contact == 0)
   double t_contact = 0.0;           // contact duration in time units (> 0 overrides N_c)
-  double viscosity = 0.0;           // mu_f >= 0; 0 means dry: no lubrication code runs
+  double viscosity = 0.0;           // mu_f, 1e-100...1e100; 0 means dry: no lubrication code runs
   double eps_activation = 0.0;      // eps_al (normalised activation gap)
   double grid_spacing = 0.0;        // dx: eps_al = 0.75 dx / R instead of a fixed eps_al
-  double eps_saturation = 1e-3;     // eps_1
+  double eps_saturation = 1e-3;     // eps_1, 1e-12 <= eps_1 < 1
   double eps_release = -1e-2;       // eps_2
   bool exact_contact = true;        // integration exact (contact_step.h) or sampled
   // Tangential model (tangential.h); all off by default: a normal-only contact.
@@ -96,19 +96,52 @@ inline std::string range_error(const char *name, double value, const char *allow
 
 }    // namespace detail
 
-// Checks every value against its allowed range; returns "" when all are valid.
+// Limits on finite values that would make the model's constants non-finite or meaningless.
+//
+// Dimensional values (t_c, mu_f, dx) lie within 1e-100...1e100 in any unit system (si, cgs,
+// real, metal, micro, nano, lj put them within a few decades of 1). Inside these bounds the
+// constants built from them, k/m_e ~ 1/t_c^2 and c/m_e ~ 1/t_c, the per-step constants
+// ~ 1/dt^2, 6 pi mu_f, 0.75 dx, stay within 1e+-212 and leave their products with masses,
+// radii and velocities some 100 decades before the double range (1e+-308) over- or
+// underflows (beyond it k/m_e = 0 and the contact is NaN).
+constexpr double smallest_dimensional = 1e-100;
+constexpr double largest_dimensional = 1e100;
+// The per-step constants of the exact contact (contact_step.h), 1 + E^2 - 2 E C ~ (pi/N_c)^2,
+// are differences of numbers near 1 and keep ~ 16 - 2 log10(N_c) digits: at N_c = 1e6 the
+// rebound is e_d to ~1e-5, at 1e7 to ~1e-3, and from N_c ~ 1e8 on the spring is lost in
+// round-off (k' = 0, NaN). A contact longer than a million steps is resolved no better
+// with more steps.
+constexpr double largest_steps_per_contact = 1e6;
+// The film's lambda(eps_1) ~ 1/eps_1 and its integral: eps_1 must be a normal double well
+// above underflow (eps_1 = 1e-310 makes 1/eps_1 = inf and the film NaN). A gap of 1e-12 R is
+// below an atomic radius for any sphere up to 100 m, so no roughness or molecular film is
+// smaller; lambda stays <= 1e12. eps_1 < 1: the expansions hold for gaps below R, and a
+// fixed eps_al must exceed eps_1 anyway.
+constexpr double smallest_saturation = 1e-12;
+
+namespace detail {
+
+inline bool within(double value, double lo, double hi) { return value >= lo && value <= hi; }
+
+}    // namespace detail
+
+// Checks every value against its allowed range; returns "" when all are valid. Conditions
+// are written so that NaN fails them.
 inline std::string validate(const Coefficients &c)
 {
   using detail::range_error;
+  using detail::within;
   if (!(c.e_dry > 0.0 && c.e_dry <= 1.0)) return range_error("e_d", c.e_dry, "0 < e_d <= 1");
   if (c.t_contact > 0.0) {
-    if (!std::isfinite(c.t_contact)) return range_error("tcontact", c.t_contact, "t_c > 0");
-  } else if (!(c.n_contact >= 1.0)) {
-    return range_error("ncontact", c.n_contact, "N_c >= 1");
+    if (!within(c.t_contact, smallest_dimensional, largest_dimensional))
+      return range_error("tcontact", c.t_contact, "1e-100 <= t_c <= 1e100");
+  } else if (!within(c.n_contact, 1.0, largest_steps_per_contact)) {
+    return range_error("ncontact", c.n_contact, "1 <= N_c <= 1e6");
   }
-  if (!(c.viscosity >= 0.0)) return range_error("viscosity", c.viscosity, "mu_f >= 0");
-  if (!(c.eps_saturation > 0.0))
-    return range_error("saturation", c.eps_saturation, "eps_1 > 0");
+  if (!(c.viscosity == 0.0 || within(c.viscosity, smallest_dimensional, largest_dimensional)))
+    return range_error("viscosity", c.viscosity, "mu_f = 0 (dry) or 1e-100 <= mu_f <= 1e100");
+  if (!(c.eps_saturation >= smallest_saturation && c.eps_saturation < 1.0))
+    return range_error("saturation", c.eps_saturation, "1e-12 <= eps_1 < 1");
   if (!(c.eps_release < c.eps_saturation))
     return "release = " + detail::number(c.eps_release) + " must be below saturation = " +
         detail::number(c.eps_saturation) + " (eps_2 < eps_1 required)";
@@ -126,7 +159,8 @@ inline std::string validate(const Coefficients &c)
           "replaces the film in overlap)";
   }
   if (c.wet()) {
-    if (c.grid_spacing < 0.0) return range_error("grid", c.grid_spacing, "dx > 0");
+    if (c.grid_spacing != 0.0 && !within(c.grid_spacing, smallest_dimensional, largest_dimensional))
+      return range_error("grid", c.grid_spacing, "1e-100 <= dx <= 1e100");
     if (c.grid_spacing == 0.0) {
       if (c.eps_activation == 0.0)
         return "viscosity > 0 requires the activation (eps_al) or grid (dx) keyword";
@@ -159,10 +193,10 @@ inline std::string validate_given(const Coefficients &c, const Given &given)
   if (given.activation && given.grid) return "activation and grid are mutually exclusive";
   if (given.tangential && !(c.e_tangential >= 0.0 && c.e_tangential <= 1.0))
     return detail::range_error("tangential", c.e_tangential, "0 <= e_t <= 1");
-  if (given.tcontact && !(c.t_contact > 0.0))
-    return detail::range_error("tcontact", c.t_contact, "t_c > 0");
-  if (given.grid && !(c.grid_spacing > 0.0))
-    return detail::range_error("grid", c.grid_spacing, "dx > 0");
+  if (given.tcontact && !detail::within(c.t_contact, smallest_dimensional, largest_dimensional))
+    return detail::range_error("tcontact", c.t_contact, "1e-100 <= t_c <= 1e100");
+  if (given.grid && !detail::within(c.grid_spacing, smallest_dimensional, largest_dimensional))
+    return detail::range_error("grid", c.grid_spacing, "1e-100 <= dx <= 1e100");
   return validate(c);
 }
 
@@ -216,12 +250,25 @@ inline std::string parse_coefficients(const std::vector<std::string> &words, siz
   return validate_given(c, given);
 }
 
-// Checks that depend on the time step; returns "" when fine.
+// Checks that depend on the time step; returns "" when fine. The contact must last
+// 1 <= N_c <= 1e6 steps (largest_steps_per_contact) and t_c = N_c dt, from which k/m_e and
+// c/m_e follow, 1e-100...1e100 time units (smallest_dimensional, largest_dimensional).
 inline std::string validate_time_step(const Coefficients &c, double dt)
 {
-  if (c.t_contact > 0.0 && c.steps_per_contact(dt) < 1.0)
-    return "tcontact = " + detail::number(c.t_contact) + " is shorter than the time step " +
-        detail::number(dt) + " (N_c = t_c / dt >= 1 required)";
+  if (c.t_contact > 0.0) {
+    const double steps = c.steps_per_contact(dt);
+    if (!(steps >= 1.0))
+      return "tcontact = " + detail::number(c.t_contact) + " is shorter than the time step " +
+          detail::number(dt) + " (N_c = t_c / dt >= 1 required)";
+    if (!(steps <= largest_steps_per_contact))
+      return "tcontact = " + detail::number(c.t_contact) + " is out of range with the time step " +
+          detail::number(dt) + ": N_c = t_c / dt = " + detail::number(steps) +
+          " (allowed: 1 <= N_c <= 1e6)";
+  } else if (!detail::within(c.contact_time(dt), smallest_dimensional, largest_dimensional)) {
+    return "ncontact = " + detail::number(c.n_contact) + " is out of range with the time step " +
+        detail::number(dt) + ": t_c = N_c dt = " + detail::number(c.contact_time(dt)) +
+        " (allowed: 1e-100 <= t_c <= 1e100)";
+  }
   return "";
 }
 

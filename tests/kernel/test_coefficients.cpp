@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -77,16 +78,16 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(BadInput{"0", "e_d = 0"}, BadInput{"-0.5", "0 < e_d <= 1"},
                       BadInput{"1.01", "e_d = 1.01"}, BadInput{"nan", "e_d"},
                       BadInput{"abc", "e_d, got 'abc'"}, BadInput{"", "missing e_d"},
-                      BadInput{"0.9 ncontact 0.5", "N_c >= 1"},
-                      BadInput{"0.9 tcontact 0", "t_c > 0"},
+                      BadInput{"0.9 ncontact 0.5", "1 <= N_c <= 1e6"},
+                      BadInput{"0.9 tcontact 0", "tcontact = 0 is out of range (allowed: 1e-100 <= t_c <= 1e100)"},
                       BadInput{"0.9 ncontact 8 tcontact 1", "mutually exclusive"},
-                      BadInput{"0.9 viscosity -1", "mu_f >= 0"},
+                      BadInput{"0.9 viscosity -1", "viscosity = -1 is out of range (allowed: mu_f = 0 (dry) or 1e-100 <= mu_f <= 1e100)"},
                       BadInput{"0.9 viscosity 1e-3", "activation"},
                       BadInput{"0.9 viscosity 1e-3 activation 1e-4", "eps_al"},
                       BadInput{"0.9 viscosity 1e-3 activation 2", "eps_al <= 1"},
-                      BadInput{"0.9 viscosity 1e-3 grid -1", "dx > 0"},
+                      BadInput{"0.9 viscosity 1e-3 grid -1", "grid = -1 is out of range (allowed: 1e-100 <= dx <= 1e100)"},
                       BadInput{"0.9 viscosity 1e-3 grid 1 activation 0.1", "mutually exclusive"},
-                      BadInput{"0.9 saturation 0", "eps_1 > 0"},
+                      BadInput{"0.9 saturation 0", "saturation = 0 is out of range (allowed: 1e-12 <= eps_1 < 1)"},
                       BadInput{"0.9 saturation 1e-3 release 1e-3", "eps_2 < eps_1"},
                       BadInput{"0.9 frobnicate 3", "unknown keyword 'frobnicate'"},
                       BadInput{"0.9 viscosity", "missing value for keyword viscosity"},
@@ -97,6 +98,53 @@ INSTANTIATE_TEST_SUITE_P(
                                "legendre needs integration exact"},
                       BadInput{"0.9 viscosity 1e-3 activation 0.1 legendre 35 release -0.01",
                                "release = -0.01 is out of range with legendre"}));
+
+// Finite but absurd values (issue 17): each stops with its name, its value and the range,
+// instead of a NaN or an infinity in the model's constants (k = 0 at N_c = 1e160, 1/eps_1 = inf
+// at eps_1 = 1e-310, ...). The limits and why: coefficients.h.
+INSTANTIATE_TEST_SUITE_P(
+    AbsurdValues, Rejects,
+    ::testing::Values(
+        BadInput{"0.9 ncontact 1e160", "ncontact = 1e+160 is out of range (allowed: 1 <= N_c <= 1e6)"},
+        BadInput{"0.9 ncontact 2e6", "ncontact = 2e+06 is out of range (allowed: 1 <= N_c <= 1e6)"},
+        BadInput{"0.9 tcontact 1e300", "tcontact = 1e+300 is out of range (allowed: 1e-100 <= t_c <= 1e100)"},
+        BadInput{"0.9 tcontact 1e-300", "tcontact = 1e-300 is out of range (allowed: 1e-100 <= t_c <= 1e100)"},
+        BadInput{"0.9 saturation 1e-310", "saturation = 1e-310 is out of range (allowed: 1e-12 <= eps_1 < 1)"},
+        BadInput{"0.9 saturation 1e-13", "saturation = 1e-13 is out of range (allowed: 1e-12 <= eps_1 < 1)"},
+        BadInput{"0.9 saturation 1 release 0.5", "saturation = 1 is out of range (allowed: 1e-12 <= eps_1 < 1)"},
+        BadInput{"0.9 viscosity 1e-3 activation 0.1 saturation 1e-310", "saturation = 1e-310 is out of range"},
+        BadInput{"0.9 viscosity 1e300 activation 0.1",
+                 "viscosity = 1e+300 is out of range (allowed: mu_f = 0 (dry) or 1e-100 <= mu_f <= 1e100)"},
+        BadInput{"0.9 viscosity 1e-310 activation 0.1", "viscosity = 1e-310 is out of range"},
+        BadInput{"0.9 viscosity 1e-3 grid 1e300", "grid = 1e+300 is out of range (allowed: 1e-100 <= dx <= 1e100)"},
+        BadInput{"0.9 viscosity 1e-3 grid 1e-310", "grid = 1e-310 is out of range (allowed: 1e-100 <= dx <= 1e100)"},
+        BadInput{"0.9 grid 1e300", "grid = 1e+300 is out of range"}));
+
+// The allowed ranges end exactly where the messages say.
+TEST(Coefficients, LimitsOfTheRangesAreAccepted)
+{
+  Coefficients c;
+  EXPECT_EQ(parse("0.9 ncontact 1e6", c), "");
+  EXPECT_EQ(parse("0.9 ncontact 1", c), "");
+  EXPECT_EQ(parse("0.9 tcontact 1e100", c), "");
+  EXPECT_EQ(parse("0.9 tcontact 1e-100", c), "");
+  EXPECT_EQ(parse("0.9 viscosity 1e100 activation 0.1 saturation 1e-12 release -1e300", c), "");
+  EXPECT_EQ(parse("0.9 viscosity 1e-100 grid 1e100", c), "");
+  EXPECT_EQ(parse("0.9 viscosity 1e-3 grid 1e-100 saturation 0.999", c), "");
+  EXPECT_EQ(parse("1e-300 friction 1e300 rolling 1e300 tangential 1e-300", c), "");
+  // Not-a-number never passes validate() (LIGGGHTS hands it values without parsing them).
+  c = Coefficients();
+  c.e_dry = 0.9;
+  for (double *field : {&c.n_contact, &c.viscosity, &c.eps_saturation, &c.eps_release, &c.legendre}) {
+    const double keep = *field;
+    *field = std::nan("");
+    EXPECT_NE(validate(c), "");
+    *field = keep;
+  }
+  c.viscosity = 1e-3;
+  c.grid_spacing = std::nan("");
+  EXPECT_NE(validate(c).find("grid = nan is out of range"), std::string::npos) << validate(c);
+}
 
 TEST(Coefficients, LegendreEndsTheFilmAtContactUnlessReleaseIsGiven)
 {
@@ -119,6 +167,22 @@ TEST(Coefficients, TimeStepChecks)
   EXPECT_NE(validate_time_step(c, 2e-4).find("N_c = t_c / dt >= 1"), std::string::npos);
   EXPECT_NE(time_step_warning(c, 2e-5).find("N_c = 5"), std::string::npos);
   EXPECT_EQ(time_step_warning(c, 1e-5), "");
+  // A contact of more than 1e6 steps is lost in round-off (coefficients.h).
+  EXPECT_EQ(validate_time_step(c, 1e-10), "");
+  EXPECT_EQ(validate_time_step(c, 1e-4 / 1e6), "");
+  EXPECT_EQ(validate_time_step(c, 1e-11),
+            "tcontact = 0.0001 is out of range with the time step 1e-11: N_c = t_c / dt = 1e+07 "
+            "(allowed: 1 <= N_c <= 1e6)");
+  ASSERT_EQ(parse("0.9 tcontact 1e100", c), "");
+  EXPECT_NE(validate_time_step(c, 1e-5).find("tcontact = 1e+100 is out of range with the time step 1e-05"),
+            std::string::npos);
+  // ncontact: t_c = N_c dt must stay within 1e-100...1e100 time units.
+  ASSERT_EQ(parse("0.9 ncontact 8", c), "");
+  EXPECT_EQ(validate_time_step(c, 1e-5), "");
+  EXPECT_EQ(validate_time_step(c, 1e-101),
+            "ncontact = 8 is out of range with the time step 1e-101: t_c = N_c dt = 8e-101 "
+            "(allowed: 1e-100 <= t_c <= 1e100)");
+  EXPECT_NE(validate_time_step(c, 1e100).find("ncontact = 8 is out of range"), std::string::npos);
 }
 
 // Messages quote values as users type them (%g), so 1e-06 reads as 1e-06, not 0.000001.

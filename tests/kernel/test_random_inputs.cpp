@@ -25,18 +25,21 @@ struct Draw {
   bool chance(double p) { return uniform(0.0, 1.0) < p; }
 };
 
-Coefficients random_coefficients(Draw &d)
+// extremes: a draw in five also reaches the ends of the allowed ranges (coefficients.h):
+// e_d down to 1e-300, N_c up to 1e6, mu_f over 1e-100...1e100, eps_1 down to 1e-12.
+Coefficients random_coefficients(Draw &d, bool extremes = false)
 {
   Coefficients c;
-  c.e_dry = d.chance(0.1) ? 1.0 : d.log_uniform(1e-4, 1.0);
-  c.n_contact = d.chance(0.1) ? 1.0 : d.log_uniform(1.0, 128.0);
+  const bool far = extremes && d.chance(0.2);
+  c.e_dry = d.chance(0.1) ? 1.0 : d.log_uniform(far ? 1e-300 : 1e-4, 1.0);
+  c.n_contact = d.chance(0.1) ? 1.0 : d.log_uniform(1.0, far ? 1e6 : 128.0);
   if (d.chance(0.5)) {
-    c.viscosity = d.log_uniform(1e-6, 10.0);
-    c.eps_saturation = d.log_uniform(1e-6, 0.1);
+    c.viscosity = far ? d.log_uniform(1e-100, 1e100) : d.log_uniform(1e-6, 10.0);
+    c.eps_saturation = d.log_uniform(far ? 1e-12 : 1e-6, 0.1);
     if (d.chance(0.3)) c.grid_spacing = d.log_uniform(1e-6, 1e-1);    // some below eps_1 R
     else c.eps_activation = d.uniform(c.eps_saturation, 1.0);
     c.eps_release = d.chance(0.5) ? d.uniform(-0.1, 0.0) : d.uniform(0.0, c.eps_saturation);
-    if (d.chance(0.3) && c.eps_release >= 0.0) c.legendre = d.chance(0.5) ? 35.0 : d.log_uniform(0.1, 1e3);
+    if (d.chance(0.3) && c.eps_release >= 0.0) c.legendre = d.chance(0.5) ? 35.0 : d.log_uniform(0.1, far ? 1e300 : 1e3);
   }
   c.exact_contact = c.legendre > 0.0 || d.chance(0.8);
   return c;
@@ -50,7 +53,7 @@ TEST(RandomInputs, NormalForceIsFiniteAndTheFilmNeverReversesTheMotion)
   const Evaluation whens[] = {Evaluation::step, Evaluation::verlet_start, Evaluation::midpoint_start};
   int evaluated = 0;
   for (int trial = 0; trial < 2000; ++trial) {
-    const Coefficients c = random_coefficients(d);
+    const Coefficients c = random_coefficients(d, true);
     if (!validate(c).empty()) continue;
     const double dt = d.log_uniform(1e-9, 1e-1);
     const Partner partner = d.chance(0.5) ? Partner::wall : Partner::particle;
@@ -105,7 +108,7 @@ TEST(RandomInputs, TangentialForcesAreFiniteAndNeverReverseTheSlip)
   Draw d;
   int evaluated = 0;
   for (int trial = 0; trial < 2000; ++trial) {
-    Coefficients c = random_coefficients(d);
+    Coefficients c = random_coefficients(d, true);
     c.friction = d.chance(0.2) ? 0.0 : d.log_uniform(1e-3, 10.0);
     if (d.chance(0.7)) c.e_tangential = d.chance(0.1) ? 0.0 : d.uniform(0.0, 1.0);
     c.rolling_friction = d.chance(0.5) ? 0.0 : d.log_uniform(1e-4, 1.0);
@@ -148,6 +151,93 @@ TEST(RandomInputs, TangentialForcesAreFiniteAndNeverReverseTheSlip)
     }
   }
   EXPECT_GT(evaluated, 50000);
+}
+
+// Every value validate() and validate_time_step() accept, however far from the usual, gives
+// finite per-type-pair constants: k and c per unit mass, the per-step contact (ContactStep),
+// lambda and its integral at eps_1 and eps_al, the film integral, the tangential constants.
+// Draws span the whole double range (most are rejected: the point is what gets through).
+TEST(RandomInputs, AcceptedCoefficientsGiveFiniteModelConstants)
+{
+  Draw d;
+  int accepted = 0;
+  // Log-uniform over any span of the double range; mostly near the allowed range [lo, hi]
+  // (ten decades either side), else anywhere from 1e-320 to 1e300.
+  auto wide = [&d](double lo, double hi) {
+    return std::exp(d.uniform(std::log(lo), std::log(hi)));
+  };
+  auto near = [&](double lo, double hi) {
+    return d.chance(0.8) ? wide(std::max(lo * 1e-10, 1e-320), std::min(hi * 1e10, 1e300))
+                         : wide(1e-320, 1e300);
+  };
+  for (int trial = 0; trial < 1000000 && accepted < 3000; ++trial) {
+    Coefficients c;
+    c.e_dry = d.chance(0.1) ? 1.0 : wide(1e-320, 1.0);
+    if (d.chance(0.5)) c.n_contact = near(1.0, 1e6);
+    else c.t_contact = near(1e-100, 1e100);
+    const double dt = near(1e-106, 1e100);
+    if (d.chance(0.7)) {
+      c.viscosity = near(1e-100, 1e100);
+      c.eps_saturation = near(1e-12, 1.0);
+      if (d.chance(0.5)) c.grid_spacing = near(1e-100, 1e100);
+      else c.eps_activation = d.log_uniform(std::min(c.eps_saturation, 1.0), 1.0);
+      c.eps_release = d.chance(0.5) ? -near(1e-100, 1e100) : d.uniform(0.0, c.eps_saturation);
+      if (c.eps_release >= 0.0 && d.chance(0.5)) c.legendre = near(1e-10, 1e10);
+    } else if (d.chance(0.5)) {
+      c.eps_saturation = near(1e-12, 1.0);
+    }
+    c.friction = d.chance(0.5) ? 0.0 : near(1e-10, 1e10);
+    if (d.chance(0.5)) c.e_tangential = d.chance(0.1) ? 0.0 : wide(1e-320, 1.0);
+    c.rolling_friction = d.chance(0.5) ? 0.0 : near(1e-10, 1e10);
+    if (!validate(c).empty() || !validate_time_step(c, dt).empty()) continue;
+    ++accepted;
+    std::ostringstream where;
+    where << "e_d " << c.e_dry << " N_c " << c.n_contact << " t_c " << c.t_contact << " dt " << dt
+          << " mu " << c.viscosity << " eps_al " << c.eps_activation << " dx " << c.grid_spacing
+          << " eps_1 " << c.eps_saturation << " eps_2 " << c.eps_release << " A " << c.legendre;
+    for (Partner partner : {Partner::particle, Partner::wall}) {
+      const NormalModel m = make_normal_model(c, partner, dt);
+      const SpringDashpot &sd = m.contact;
+      ASSERT_TRUE(std::isfinite(sd.stiffness_per_mass) && sd.stiffness_per_mass > 0.0) << where.str();
+      ASSERT_TRUE(std::isfinite(sd.damping_per_mass) && sd.damping_per_mass >= 0.0) << where.str();
+      const ContactStep &cs = m.step;
+      ASSERT_TRUE(std::isfinite(cs.inv_dt) && std::isfinite(cs.omega) && cs.omega > 0.0) << where.str();
+      ASSERT_TRUE(std::isfinite(cs.decay_rate) && cs.decay_rate >= 0.0) << where.str();
+      ASSERT_TRUE(cs.E >= 0.0 && cs.E <= 1.0 && std::isfinite(cs.C) && std::isfinite(cs.S)) << where.str();
+      ASSERT_TRUE(std::isfinite(cs.stiffness_step) && cs.stiffness_step > 0.0) << where.str();
+      ASSERT_TRUE(std::isfinite(cs.damping_step) && cs.damping_step >= 0.0) << where.str();
+      for (int k = 0; k <= ContactStep::table_size; ++k)
+        ASSERT_TRUE(cs.exit_guess[k] >= 0.0 && cs.exit_guess[k] <= dt && cs.entry_guess[k] >= 0.0 &&
+                    cs.entry_guess[k] <= dt) << where.str();
+      // The contact keeps e_d (exact for N_c >= 1.5; at most 1e-5 off at N_c = 1e6).
+      const double e = restitution_of(sd);
+      ASSERT_TRUE(std::isfinite(e)) << where.str();
+      if (c.e_dry > 1e-100) {
+        ASSERT_NEAR(std::log(e), std::log(c.e_dry), 1e-3) << where.str();
+      }
+      const Lubrication &lub = m.lubrication;
+      ASSERT_TRUE(std::isfinite(lub.six_pi_mu) && std::isfinite(lub.lambda_saturated) &&
+                  std::isfinite(lub.integral_saturated)) << where.str();
+      if (lub.active()) {
+        // Film radii for which eps_al lies within [eps_1, 1] (a fixed eps_al does; a grid's
+        // 0.75 dx / R does for R >= 0.75 dx).
+        const double radius = c.grid_spacing > 0.0 ? 0.75 * c.grid_spacing / d.log_uniform(c.eps_saturation, 1.0)
+                                                   : d.log_uniform(1e-100, 1e100);
+        const Lubrication::Activation al = lub.activation(FilmRadius(radius));
+        ASSERT_TRUE(std::isfinite(al.eps) && std::isfinite(al.lambda) && std::isfinite(al.integral)) << where.str();
+        for (double eps : {c.eps_release - 1.0, c.eps_release, 0.0, 0.5 * c.eps_saturation, c.eps_saturation,
+                           0.5 * (c.eps_saturation + al.eps), al.eps, 2.0})
+          ASSERT_TRUE(std::isfinite(lub.film_integral(eps, al))) << where.str() << " eps " << eps;
+        ASSERT_GE(lub.film_integral(0.0, al), 0.0) << where.str();
+      }
+      calibration_warning(c, partner);    // must not trap
+    }
+    const TangentialModel tm = make_tangential_model(c, dt);
+    ASSERT_TRUE(std::isfinite(tm.stiffness_step) && tm.stiffness_step > 0.0) << where.str();
+    ASSERT_TRUE(std::isfinite(tm.damping_step) && tm.damping_step >= 0.0) << where.str();
+    ASSERT_TRUE(std::isfinite(tm.two_pi_mu)) << where.str();
+  }
+  EXPECT_GE(accepted, 3000);
 }
 
 TEST(RandomInputs, DragCoefficientIsFiniteAndPositive)

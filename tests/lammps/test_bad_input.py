@@ -30,9 +30,9 @@ def script(pair_coeff="pair_coeff * * 0.9", fix="", atom_style="sphere", extra_b
 CASES = {
     "e_d_zero": (script("pair_coeff * * 0"), ["e_d = 0", "0 < e_d <= 1"]),
     "e_d_above_one": (script("pair_coeff * * 1.5"), ["e_d = 1.5", "0 < e_d <= 1"]),
-    "ncontact_below_one": (script("pair_coeff * * 0.9 ncontact 0.5"), ["ncontact = 0.5", "N_c >= 1"]),
+    "ncontact_below_one": (script("pair_coeff * * 0.9 ncontact 0.5"), ["ncontact = 0.5", "1 <= N_c <= 1e6"]),
     "negative_viscosity": (script("pair_coeff * * 0.9 viscosity -1e-3 activation 0.1"),
-                           ["viscosity = -0.001", "mu_f >= 0"]),
+                           ["viscosity = -0.001", "mu_f = 0 (dry) or 1e-100 <= mu_f <= 1e100"]),
     "eps1_not_above_eps2": (script("pair_coeff * * 0.9 saturation 1e-3 release 2e-3"),
                             ["release = 0.002", "eps_2 < eps_1"]),
     "wet_without_activation": (script("pair_coeff * * 0.9 viscosity 1e-3"), ["activation", "grid"]),
@@ -68,7 +68,7 @@ CASES = {
                                       ["Fix wall/lubrication", "unknown keyword 'damping'"]),
     "wall_e_d": (script(fix="fix w all wall/lubrication 0 zplane 0.0 NULL"), ["e_d = 0", "0 < e_d <= 1"]),
     "wall_viscosity": (script(fix="fix w all wall/lubrication 0.9 viscosity -2 grid 1e-4 zplane 0.0 NULL"),
-                       ["viscosity = -2", "mu_f >= 0"]),
+                       ["viscosity = -2", "mu_f = 0 (dry) or 1e-100 <= mu_f <= 1e100"]),
     "wall_missing_plane": (script(fix="fix w all wall/lubrication 0.9 ncontact 8"), ["missing wall style"]),
     "wall_both_null": (script(fix="fix w all wall/lubrication 0.9 zplane NULL NULL"), ["both walls are NULL"]),
     "legendre_negative": (script("pair_coeff * * 0.9 viscosity 1e-3 activation 0.1 legendre -35"),
@@ -91,6 +91,37 @@ CASES = {
     "wall_tangential": (script(fix="fix w all wall/lubrication 0.9 friction 0.5 tangential 2 zplane 0.0 NULL"),
                         ["Fix wall/lubrication", "tangential = 2", "0 <= e_t <= 1"]),
     "wall_lo_above_hi": (script(fix="fix w all wall/lubrication 0.9 zplane 0.02 0.01"), ["must be below hi"]),
+    # Finite but absurd values (issue 17): an ERROR with the value and the range, not a NaN.
+    "ncontact_absurd": (script("pair_coeff * * 0.9 ncontact 1e160"),
+                        ["ncontact = 1e+160 is out of range", "1 <= N_c <= 1e6"]),
+    "tcontact_absurd": (script("pair_coeff * * 0.9 tcontact 1e300"),
+                        ["tcontact = 1e+300 is out of range", "1e-100 <= t_c <= 1e100"]),
+    "saturation_absurd": (script("pair_coeff * * 0.9 viscosity 1e-3 activation 0.1 saturation 1e-310"),
+                          ["saturation = 1e-310 is out of range", "1e-12 <= eps_1 < 1"]),
+    "viscosity_absurd": (script("pair_coeff * * 0.9 viscosity 1e300 activation 0.1"),
+                         ["viscosity = 1e+300 is out of range", "1e-100 <= mu_f <= 1e100"]),
+    "grid_absurd": (script("pair_coeff * * 0.9 viscosity 1e-3 grid 1e300"),
+                    ["grid = 1e+300 is out of range", "1e-100 <= dx <= 1e100"]),
+    "tcontact_too_many_steps": (script("pair_coeff * * 0.9 tcontact 100"),
+                                ["tcontact = 100 is out of range with the time step 1e-05",
+                                 "N_c = t_c / dt = 1e+07", "1 <= N_c <= 1e6"]),
+    "ncontact_absurd_time_step": (script("pair_coeff * * 0.9", extra_before_run="timestep 1e-101"),
+                                  ["ncontact = 8 is out of range with the time step 1e-101",
+                                   "1e-100 <= t_c <= 1e100"]),
+    "wall_ncontact_absurd": (script(fix="fix w all wall/lubrication 0.9 ncontact 1e160 zplane 0.0 NULL"),
+                             ["Fix wall/lubrication", "ncontact = 1e+160 is out of range", "1 <= N_c <= 1e6"]),
+    "wall_tcontact_absurd": (script(fix="fix w all wall/lubrication 0.9 tcontact 1e300 zplane 0.0 NULL"),
+                             ["Fix wall/lubrication", "tcontact = 1e+300 is out of range"]),
+    "wall_saturation_absurd": (script(fix="fix w all wall/lubrication 0.9 viscosity 1e-3 grid 1e-4 "
+                                          "saturation 1e-310 zplane 0.0 NULL"),
+                               ["Fix wall/lubrication", "saturation = 1e-310 is out of range",
+                                "1e-12 <= eps_1 < 1"]),
+    "wall_viscosity_absurd": (script(fix="fix w all wall/lubrication 0.9 viscosity 1e300 grid 1e-4 "
+                                         "zplane 0.0 NULL"),
+                              ["Fix wall/lubrication", "viscosity = 1e+300 is out of range"]),
+    "wall_tcontact_too_many_steps": (script(fix="fix w all wall/lubrication 0.9 tcontact 100 zplane 0.0 NULL"),
+                                     ["Fix wall/lubrication", "tcontact = 100 is out of range with the time "
+                                      "step 1e-05", "1 <= N_c <= 1e6"]),
 }
 
 
