@@ -41,13 +41,25 @@ inline double film_kick_time(double dt, bool at_start, bool midpoint_start)
   return !at_start ? dt : midpoint_start ? 0.25 * dt : 0.5 * dt;
 }
 
+// The contact's capacity m_e |u_n|: the largest impulse its own cap allows [mass velocity].
+__attribute__((always_inline)) inline double film_capacity(double reduced_mass, double u_n)
+{
+  return reduced_mass * std::fabs(u_n);
+}
+
 // The contact's share a_k = c_k t_kick / m_e = |F_l| t_kick / (m_e |u_n|) (dimensionless, <= 1
-// after the contact's own cap; m_e = m for a wall). F_l = 0 wherever u_n = 0, so the guard only
-// avoids 0/0.
+// after the contact's own cap; m_e = m for a wall) from its film force and capacity.
+// F_l = 0 wherever u_n = 0, so the guard only avoids 0/0.
+__attribute__((always_inline)) inline double film_share_of_capacity(double film_force, double capacity,
+                                                                    double kick_time)
+{
+  return std::fabs(film_force) * kick_time / std::max(capacity, DBL_MIN);
+}
+
 __attribute__((always_inline)) inline double film_share(double film_force, double reduced_mass, double u_n,
                                                         double kick_time)
 {
-  return std::fabs(film_force) * kick_time / std::max(reduced_mass * std::fabs(u_n), DBL_MIN);
+  return film_share_of_capacity(film_force, film_capacity(reduced_mass, u_n), kick_time);
 }
 
 // Scale of one atom's films from its load D_i; a pair takes the smaller of its two atoms'

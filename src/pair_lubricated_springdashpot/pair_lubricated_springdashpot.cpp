@@ -342,26 +342,31 @@ void PairLubricatedSpringDashpot::reserve_records(int more)
 // budget is scaled down by 1 / max(1, D_i, D_j) (lubricated/film_budget.h).
 void PairLubricatedSpringDashpot::finish_film_budget()
 {
-  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   if (newton_pair) {
     comm_what = COMM_LOAD;
     comm->reverse_comm(this);
   }
   double *load = load_of_atom.data(), *scale = scale_of_atom.data();
-  for (int i = 0; i < nlocal; i++) scale[i] = lub::film_scale_of_load(load[i]);
+  int over = 0;
+  for (int i = 0; i < nlocal; i++) {
+    scale[i] = lub::film_scale_of_load(load[i]);
+    over |= scale[i] < 1.0;
+  }
+  // Most steps of most beds leave every film whole: then no scales travel and nothing is redone.
+  int any_over = 0;
+  MPI_Allreduce(&over, &any_over, 1, MPI_INT, MPI_MAX, world);
+  if (!any_over) return;
   comm_what = COMM_SCALE;
   comm->forward_comm(this);
-  bool over = false;
-  for (int k = 0; k < nall; k++) over |= scale[k] < 1.0;
-  if (!over) return;
   double **x = atom->x, **f = atom->f;
   for (int r = 0; r < nrecord; r++) {
     const int i = record_i[r], j = record_j[r];
     const double s = std::min(scale[i], scale[j]);
     if (s == 1.0) continue;
-    const double fpair = (s - 1.0) * record_force[r];
     const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+    const double fpair = (s - 1.0) * record_force[r] / std::sqrt(delx * delx + dely * dely + delz * delz);
     f[i][0] += delx * fpair;
     f[i][1] += dely * fpair;
     f[i][2] += delz * fpair;
@@ -473,7 +478,7 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
   const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
   const vector_pairs::Atoms atoms{x[0], atom->v[0], atom->radius, atom->rmass};
   constexpr int chunk = 256;
-  double fpair[chunk], energy[chunk], film[chunk], share[chunk];
+  double fpair[chunk], energy[chunk], film[chunk], capacity[chunk];
   int done[chunk], rest[chunk];
   const bool budget = film_budget;
   auto apply = [&](int i, int j, double fij, double eij) {
@@ -488,27 +493,30 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
     }
     if (evflag) ev_tally(i, j, nlocal, newton_pair, eij, 0.0, fij, delx, dely, delz);
   };
+  // The loops' films enter the budget (their kick is a step: the loops run in steps only): the
+  // shares in a loop of their own (vectorised), the rest with the forces' scatter.
+  const double dt = update->dt;
+  auto record_films = [&](const int *pair_i, const int *pair_j, int n) {
+    for (int c = 0; c < n; c++) capacity[c] = lub::film_share_of_capacity(film[c], capacity[c], dt);
+    for (int c = 0; c < n; c++) record_film(pair_i[c], pair_j[c], film[c], capacity[c], nlocal, newton_pair);
+  };
   // At most one chunk of pairs of one model.
   auto film_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
-    vector_pairs::film_only(atoms, model, pair_i, pair_j, n, fpair, share);
+    vector_pairs::film_only(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
     for (int c = 0; c < n; c++) apply(pair_i[c], pair_j[c], fpair[c], 0.0);
-    if (budget)
-      for (int c = 0; c < n; c++)
-        record_film(pair_i[c], pair_j[c], fpair[c], share[c], nlocal, newton_pair);
+    if (budget) record_films(pair_i, pair_j, n);
   };
   auto kept_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
-    vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
-    if (budget && model.lubrication.active())
-      for (int c = 0; c < n; c++)
-        record_film(pair_i[c], pair_j[c], film[c], share[c], nlocal, newton_pair);
+    vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
     int nrest = 0;
     for (int c = 0; c < n; c++) {
-      // Branch-free (which pairs are done follows no pattern): the others have fpair = 0 here
-      // and are listed for the general loop.
+      // Branch-free (which pairs are done follows no pattern): the others have fpair = 0 (and
+      // no film) here and are listed for the general loop.
       apply(pair_i[c], pair_j[c], fpair[c], energy[c]);
       rest[nrest] = c;
       nrest += !done[c];
     }
+    if (budget && model.lubrication.active()) record_films(pair_i, pair_j, n);
     for (int k = 0; k < nrest; k++) evaluate(pair_i[rest[k]], pair_j[rest[k]], 0);
   };
   // A list in chunks, each grouped by type pair (a counting sort within the chunk, which
@@ -692,7 +700,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     const double fpair = fn.total() * rinv;
     double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
     if (budget)
-      record_film(i, j, fn.lubrication * rinv, lub::film_share(fn.lubrication, m_e, u_n, kick_time), nlocal,
+      record_film(i, j, fn.lubrication, lub::film_share(fn.lubrication, m_e, u_n, kick_time), nlocal,
                   newton_pair);
     if (TANGENTIAL) {
       double ft[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0}, tj[3] = {0.0, 0.0, 0.0};

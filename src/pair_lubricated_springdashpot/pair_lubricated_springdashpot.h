@@ -72,7 +72,7 @@ class PairLubricatedSpringDashpot : public Pair {
 
   // Many-body film budget (`limit atom`, the default; `limit pair`: each pair's own cap only).
   // Per owned and ghost atom: the summed film share and its scale; per pair with a film: i, j
-  // and the film force / r, applied in full by the loops and scaled down afterwards.
+  // and its film force (along n), applied in full by the loops and scaled down afterwards.
   bool limit_per_atom = true;
   bool film_budget = false;
   std::vector<class FixWallLubrication *> walls;    // their films share the atoms' budget
@@ -83,15 +83,15 @@ class PairLubricatedSpringDashpot : public Pair {
   enum { COMM_LOAD, COMM_SCALE } comm_what = COMM_LOAD;
   void begin_film_budget();
   void reserve_records(int more);
-  __attribute__((always_inline)) inline void record_film(int i, int j, double film_over_r, double share,
+  __attribute__((always_inline)) inline void record_film(int i, int j, double film, double share,
                                                          int nlocal, int newton_pair)
   {
     load_of_atom[i] += share;
     if (newton_pair || j < nlocal) load_of_atom[j] += share;
     record_i[nrecord] = i;
     record_j[nrecord] = j;
-    record_force[nrecord] = film_over_r;
-    nrecord += film_over_r != 0.0;
+    record_force[nrecord] = film;
+    nrecord += film != 0.0;
   }
   void finish_film_budget();
 

@@ -49,7 +49,8 @@ namespace vector_pairs {
   template <bool GRID>
   __attribute__((always_inline)) static inline void film_only_loop(
       const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
-      const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict share)
+      const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
+      double *__restrict capacity)
   {
     const double dt = model.step.dt, inv_dt = model.step.inv_dt;
     for (int c = 0; c < n; c++) {
@@ -57,15 +58,16 @@ namespace vector_pairs {
       const double film = lub::film_force_apart<GRID>(model.lubrication, g.r - g.radsum, g.film, g.m_e,
                                                       g.u_n, dt, inv_dt);
       fpair[c] = g.rinv * film;
-      share[c] = lub::film_share(film, g.m_e, g.u_n, dt);
+      film_force[c] = film;
+      capacity[c] = lub::film_capacity(g.m_e, g.u_n);
     }
   }
 
   template <bool WET, bool GRID>
   __attribute__((always_inline)) static inline void contact_or_film_loop(
       const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
-      const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_part,
-      double *__restrict share, double *__restrict energy, int *__restrict done)
+      const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
+      double *__restrict capacity, double *__restrict energy, int *__restrict done)
   {
     const double dt = model.step.dt, inv_dt = model.step.inv_dt;
     for (int c = 0; c < n; c++) {
@@ -80,9 +82,10 @@ namespace vector_pairs {
           WET ? lub::film_force_apart<GRID>(model.lubrication, gap, g.film, g.m_e, g.u_n, dt, inv_dt) : 0.0;
       const bool known = (sustained | apart) & (g.r > 0.0);
       fpair[c] = known ? (sustained ? contact.total() : film) * g.rinv : 0.0;
-      const double film_known = WET & known ? (sustained ? contact.lubrication : film) : 0.0;
-      film_part[c] = film_known * g.rinv;
-      share[c] = WET ? lub::film_share(film_known, g.m_e, g.u_n, dt) : 0.0;
+      // The shares themselves are divided out by the caller: with that division in it, GCC 12
+      // no longer if-converts (and vectorises) this loop.
+      film_force[c] = WET & known ? (sustained ? contact.lubrication : film) : 0.0;
+      capacity[c] = lub::film_capacity(g.m_e, g.u_n);
       energy[c] = known & sustained ? contact.energy : 0.0;
       done[c] = known;
     }
@@ -90,26 +93,26 @@ namespace vector_pairs {
 
   VECTOR_PAIRS_CLONES
   void film_only(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
-                 const int *pair_j, int n, double *fpair, double *share)
+                 const int *pair_j, int n, double *fpair, double *film, double *capacity)
   {
     if (model.lubrication.grid_spacing > 0.0)
-      film_only_loop<true>(atoms, model, pair_i, pair_j, n, fpair, share);
+      film_only_loop<true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
     else
-      film_only_loop<false>(atoms, model, pair_i, pair_j, n, fpair, share);
+      film_only_loop<false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
   }
 
   VECTOR_PAIRS_CLONES
   void contact_or_film(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
-                       const int *pair_j, int n, double *fpair, double *film, double *share,
+                       const int *pair_j, int n, double *fpair, double *film, double *capacity,
                        double *energy, int *done)
   {
     const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
     if (!wet)
-      contact_or_film_loop<false, false>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+      contact_or_film_loop<false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
     else if (grid)
-      contact_or_film_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+      contact_or_film_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
     else
-      contact_or_film_loop<true, false>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+      contact_or_film_loop<true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
   }
 
 }    // namespace vector_pairs
