@@ -19,12 +19,14 @@ namespace lub = lubricated;
 namespace LAMMPS_NS {
 namespace vector_pairs {
 
-  // What every pair needs: separation, normal velocity, radii and reduced mass.
+  // What every pair needs: separation, normal velocity, radii and reduced mass (INVERSE:
+  // from the inverse contact masses; 0 for two immovable atoms, whose forces are then 0).
   struct Geometry {
     double delx, dely, delz, r, rinv, u_n, radsum, m_e;
     lub::FilmRadius film;
   };
 
+  template <bool INVERSE>
   __attribute__((always_inline)) static inline Geometry geometry(const Atoms &atoms, int i, int j)
   {
     const double *__restrict x = atoms.x;
@@ -42,18 +44,19 @@ namespace vector_pairs {
     const double radi = atoms.radius[i], radj = atoms.radius[j];
     g.radsum = radi + radj;
     g.film = lub::film_radius_pair(radi, radj);
-    g.m_e = atoms.rmass[i] * atoms.rmass[j] / (atoms.rmass[i] + atoms.rmass[j]);
+    if (INVERSE) g.m_e = lub::reduced_mass_of_inverses(atoms.inverse_mass[i], atoms.inverse_mass[j]);
+    else g.m_e = atoms.rmass[i] * atoms.rmass[j] / (atoms.rmass[i] + atoms.rmass[j]);
     return g;
   }
 
-  template <bool GRID>
+  template <bool GRID, bool INVERSE>
   __attribute__((always_inline)) static inline void film_only_loop(
       const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
       const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict share)
   {
     const double dt = model.step.dt, inv_dt = model.step.inv_dt;
     for (int c = 0; c < n; c++) {
-      const Geometry g = geometry(atoms, pair_i[c], pair_j[c]);
+      const Geometry g = geometry<INVERSE>(atoms, pair_i[c], pair_j[c]);
       const double film = lub::film_force_apart<GRID>(model.lubrication, g.r - g.radsum, g.film, g.m_e,
                                                       g.u_n, dt, inv_dt);
       fpair[c] = g.rinv * film;
@@ -61,7 +64,7 @@ namespace vector_pairs {
     }
   }
 
-  template <bool WET, bool GRID>
+  template <bool WET, bool GRID, bool INVERSE>
   __attribute__((always_inline)) static inline void contact_or_film_loop(
       const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
       const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_part,
@@ -69,7 +72,7 @@ namespace vector_pairs {
   {
     const double dt = model.step.dt, inv_dt = model.step.inv_dt;
     for (int c = 0; c < n; c++) {
-      const Geometry g = geometry(atoms, pair_i[c], pair_j[c]);
+      const Geometry g = geometry<INVERSE>(atoms, pair_i[c], pair_j[c]);
       const double gap = g.r - g.radsum;
       bool sustained;
       const lub::NormalForce contact =
@@ -92,10 +95,14 @@ namespace vector_pairs {
   void film_only(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
                  const int *pair_j, int n, double *fpair, double *share)
   {
-    if (model.lubrication.grid_spacing > 0.0)
-      film_only_loop<true>(atoms, model, pair_i, pair_j, n, fpair, share);
+    const bool grid = model.lubrication.grid_spacing > 0.0;
+    if (atoms.inverse_mass) {
+      if (grid) film_only_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, share);
+      else film_only_loop<false, true>(atoms, model, pair_i, pair_j, n, fpair, share);
+    } else if (grid)
+      film_only_loop<true, false>(atoms, model, pair_i, pair_j, n, fpair, share);
     else
-      film_only_loop<false>(atoms, model, pair_i, pair_j, n, fpair, share);
+      film_only_loop<false, false>(atoms, model, pair_i, pair_j, n, fpair, share);
   }
 
   VECTOR_PAIRS_CLONES
@@ -104,12 +111,19 @@ namespace vector_pairs {
                        double *energy, int *done)
   {
     const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
-    if (!wet)
-      contact_or_film_loop<false, false>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+    if (atoms.inverse_mass) {
+      if (!wet)
+        contact_or_film_loop<false, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+      else if (grid)
+        contact_or_film_loop<true, true, true>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+      else
+        contact_or_film_loop<true, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+    } else if (!wet)
+      contact_or_film_loop<false, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
     else if (grid)
-      contact_or_film_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+      contact_or_film_loop<true, true, false>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
     else
-      contact_or_film_loop<true, false>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+      contact_or_film_loop<true, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
   }
 
 }    // namespace vector_pairs

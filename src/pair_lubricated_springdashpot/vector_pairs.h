@@ -16,9 +16,11 @@
 namespace LAMMPS_NS {
 namespace vector_pairs {
 
-  // Per-atom data: x and v 3 per atom, contiguous (LAMMPS's x[0], v[0]).
+  // Per-atom data: x and v 3 per atom, contiguous (LAMMPS's x[0], v[0]). inverse_mass: the
+  // inverse contact masses (contact_mass.h) where a run has immovable atoms or rigid bodies,
+  // else nullptr (m_e from rmass).
   struct Atoms {
-    const double *x, *v, *radius, *rmass;
+    const double *x, *v, *radius, *rmass, *inverse_mass;
   };
 
   // The pairs (pair_i[c], pair_j[c]), c < n, all of model `model` (exact integration, a step).
