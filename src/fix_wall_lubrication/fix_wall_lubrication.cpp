@@ -19,6 +19,7 @@
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "update.h"
 #include "utils.h"
 
@@ -220,17 +221,8 @@ void FixWallLubrication::compute_walls(bool defer_films)
   }
   const double kick_time = lub::film_kick_time(update->dt, when != lub::Evaluation::step,
                                                when == lub::Evaluation::midpoint_start);
-  const bool by_inverse = contact_mass.active();
-  if (by_inverse) {
-    if (static_cast<int>(inverse_mass.size()) < nlocal) inverse_mass.resize(atom->nmax);
-    contact_mass.fill(inverse_mass.data());
-  }
-
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    // m_e = m; the body's mass for an atom of a rigid body; an immovable atom is left alone.
-    const double mass = by_inverse ? (inverse_mass[i] > 0.0 ? 1.0 / inverse_mass[i] : 0.0) : rmass[i];
-    if (mass == 0.0) continue;
+  // Both walls on atom i of contact mass `mass`.
+  auto walls_of_atom = [&](int i, double mass) __attribute__((always_inline)) {
     const double r = radius[i];
     // side = +1: lo wall, normal along +axis; side = -1: hi wall, normal along -axis.
     for (int side = 1; side >= -1; side -= 2) {
@@ -264,7 +256,21 @@ void FixWallLubrication::compute_walls(bool defer_films)
         }
       }
     }
+  };
+
+  // m_e = m; the body's mass for an atom of a rigid body; an immovable atom is left alone.
+  if (!contact_mass.active()) {
+    for (int i = 0; i < nlocal; i++)
+      if (mask[i] & groupbit) walls_of_atom(i, rmass[i]);
+    return;
   }
+  // Atoms change index only where the lists are rebuilt (or a run starts).
+  if (neighbor->ago == 0 || update->setupflag || static_cast<int>(inverse_mass.size()) < nlocal) {
+    if (static_cast<int>(inverse_mass.size()) < nlocal) inverse_mass.resize(atom->nmax);
+    contact_mass.fill(inverse_mass.data());
+  }
+  for (int i = 0; i < nlocal; i++)
+    if ((mask[i] & groupbit) && inverse_mass[i] > 0.0) walls_of_atom(i, 1.0 / inverse_mass[i]);
 }
 
 // Tangential force and torque on i from the wall on this side (tangential.h, m_e = mass; the

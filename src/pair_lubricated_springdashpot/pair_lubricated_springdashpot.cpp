@@ -516,14 +516,18 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
   };
   // At most one chunk of pairs of one model.
   auto film_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
-    vector_pairs::film_only(atoms, model, pair_i, pair_j, n, fpair, share);
+    if (atoms.inverse_mass) vector_pairs::film_only_by_inverse(atoms, model, pair_i, pair_j, n, fpair, share);
+    else vector_pairs::film_only(atoms, model, pair_i, pair_j, n, fpair, share);
     for (int c = 0; c < n; c++) apply(pair_i[c], pair_j[c], fpair[c], 0.0);
     if (budget)
       for (int c = 0; c < n; c++)
         record_film(pair_i[c], pair_j[c], fpair[c], share[c], nlocal, newton_pair);
   };
   auto kept_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
-    vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+    if (atoms.inverse_mass)
+      vector_pairs::contact_or_film_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+    else
+      vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
     if (budget && model.lubrication.active())
       for (int c = 0; c < n; c++)
         record_film(pair_i[c], pair_j[c], film[c], share[c], nlocal, newton_pair);
@@ -590,6 +594,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   const double dt = update->dt;
   // Full-step velocities at a run start, used by each integrator its own way (contact_step.h).
   const lub::Evaluation when = lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
+  const double *inverse = inverse_mass_on ? inverse_mass.data() : nullptr;
 
   const int inum = list->inum;
   const int *ilist = list->ilist;
@@ -608,7 +613,6 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     step_reach[k] = (std::fabs(vk[0]) + std::fabs(vk[1]) + std::fabs(vk[2])) * dt;
   }
   const double *moves = step_reach.data();
-  const double *inverse = inverse_mass_on ? inverse_mass.data() : nullptr;
 
   // Pass 1, branch-free: keep the list entries that can act within the coming step: in the
   // film's reach (the largest of the two types) or in contact, or within what both atoms
@@ -625,7 +629,6 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
     const char *touched = TANGENTIAL && history ? history->touched(i) : nullptr;
-    const bool held_i = inverse && inverse[i] == 0.0;    // then its pairs with held atoms exert nothing
     if (ncandidate + jnum > static_cast<int>(candidate_i.size())) {
       candidate_i.resize(2 * (ncandidate + jnum));
       candidate_j.resize(2 * (ncandidate + jnum));
@@ -648,12 +651,11 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
       out_i[ncandidate] = i;
       out_j[ncandidate] = j;
       if (TANGENTIAL) out_jj[ncandidate] = jj;
-      const int acts = !(held_i && inverse[j] == 0.0);
-      int keep = (rsq < (SPLIT ? touch * touch : near * near)) & acts;
+      int keep = rsq < (SPLIT ? touch * touch : near * near);
       if (WET && SPLIT) {
         film_out_i[nfilm] = i;
         film_out_j[nfilm] = j;
-        nfilm += (rsq < near * near) & !keep & acts;
+        nfilm += (rsq < near * near) & !keep;
       }
       if (TANGENTIAL && touched) keep |= touched[jj];
       ncandidate += keep;
@@ -717,7 +719,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     const double u_n = (dvx * delx + dvy * dely + dvz * delz) * rinv;
     const double m_e = inverse ? lub::reduced_mass_of_inverses(inverse[i], inverse[j])
                                : lub::reduced_mass(rmass[i], rmass[j]);
-    if (m_e == 0.0) {    // neither atom can move
+    if (m_e == 0.0) {    // neither atom can move (the vectorised loops give such pairs 0)
       forget();
       return;
     }

@@ -91,18 +91,25 @@ namespace vector_pairs {
     }
   }
 
+  // Each entry point compiles its own loops (the plain ones exactly as without contact masses).
   VECTOR_PAIRS_CLONES
   void film_only(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
                  const int *pair_j, int n, double *fpair, double *share)
   {
-    const bool grid = model.lubrication.grid_spacing > 0.0;
-    if (atoms.inverse_mass) {
-      if (grid) film_only_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, share);
-      else film_only_loop<false, true>(atoms, model, pair_i, pair_j, n, fpair, share);
-    } else if (grid)
+    if (model.lubrication.grid_spacing > 0.0)
       film_only_loop<true, false>(atoms, model, pair_i, pair_j, n, fpair, share);
     else
       film_only_loop<false, false>(atoms, model, pair_i, pair_j, n, fpair, share);
+  }
+
+  VECTOR_PAIRS_CLONES
+  void film_only_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
+                            const int *pair_j, int n, double *fpair, double *share)
+  {
+    if (model.lubrication.grid_spacing > 0.0)
+      film_only_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, share);
+    else
+      film_only_loop<false, true>(atoms, model, pair_i, pair_j, n, fpair, share);
   }
 
   VECTOR_PAIRS_CLONES
@@ -111,19 +118,26 @@ namespace vector_pairs {
                        double *energy, int *done)
   {
     const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
-    if (atoms.inverse_mass) {
-      if (!wet)
-        contact_or_film_loop<false, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
-      else if (grid)
-        contact_or_film_loop<true, true, true>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
-      else
-        contact_or_film_loop<true, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
-    } else if (!wet)
+    if (!wet)
       contact_or_film_loop<false, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
     else if (grid)
       contact_or_film_loop<true, true, false>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
     else
       contact_or_film_loop<true, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+  }
+
+  VECTOR_PAIRS_CLONES
+  void contact_or_film_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
+                                  const int *pair_j, int n, double *fpair, double *film, double *share,
+                                  double *energy, int *done)
+  {
+    const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
+    if (!wet)
+      contact_or_film_loop<false, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+    else if (grid)
+      contact_or_film_loop<true, true, true>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
+    else
+      contact_or_film_loop<true, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, share, energy, done);
   }
 
 }    // namespace vector_pairs

@@ -39,6 +39,13 @@ namespace vector_pairs {
                        const int *pair_j, int n, double *fpair, double *film, double *share,
                        double *energy, int *done);
 
+  // The same with m_e from atoms.inverse_mass (a pair of two immovable atoms: all 0, done).
+  void film_only_by_inverse(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
+                            const int *pair_j, int n, double *fpair, double *share);
+  void contact_or_film_by_inverse(const Atoms &atoms, const lubricated::NormalModel &model,
+                                  const int *pair_i, const int *pair_j, int n, double *fpair,
+                                  double *film, double *share, double *energy, int *done);
+
 }    // namespace vector_pairs
 }    // namespace LAMMPS_NS
 
