@@ -107,8 +107,9 @@ void ContactMass::init(const std::string &who, bool log)
   any = total[0] + total[1] > 0.0;
   if (!log || comm->me != 0) return;
   for (const auto &id : unknown)
-    error->warning(FLERR, "{}: fix {} setforce was defined before the plugin was loaded: its atoms are "
-                   "not taken as immovable (its arguments are unknown)", who, id);
+    error->warning(FLERR, "{}: fix {} setforce was defined before the plugin was loaded (or, after a "
+                   "clear, before the plugin's first style): its arguments are unknown, its atoms are not "
+                   "taken as immovable", who, id);
   if (any)
     utils::logmesg(lmp, "{}: {:.0f} immovable atoms (infinite mass in contacts), {:.0f} in rigid bodies "
                    "(the body's mass)\n", who, total[0], total[1]);

@@ -31,8 +31,10 @@ class ContactMass : protected Pointers {
   // nlocal). Reads the rigid fixes' body indices and masses as they are now.
   void fill(double *inverse);
 
-  // Notes the arguments of every fix setforce created from now on in this LAMMPS instance:
-  // a Fix keeps no copy of them, and only `setforce 0 0 0` (no region, no variable) holds.
+  // Notes the arguments of every fix setforce created from now on in this LAMMPS instance
+  // (a Fix keeps no copy of them, and only `setforce 0 0 0` without region holds): wraps the
+  // built-in factory. Called at plugin load and, since `clear` restores the factories, by the
+  // constructors of the plugin's styles.
   static void watch_setforce(class LAMMPS *lmp);
 
  private:

@@ -93,6 +93,23 @@ def test_only_setforce_all_zero_holds(lmp, force):
     assert "immovable" not in lmp.log
 
 
+def test_setforce_arguments_are_known_after_clear(lmp):
+    """The plugin records each fix setforce as it is created: after a clear that works again
+    once a style of the plugin exists; a setforce defined before that is not taken as holding,
+    with a warning (its atom keeps its mass: the free pair's m_e, e = 0.928 at e_d 0.9)."""
+    held = frozen_pair(0.9, "setforce")
+    first = held.replace(f'print "RESULT e', f'print "RESULT first', 1)
+    body = held[held.index("atom_style"):]
+    early = body.replace("fix hold base setforce 0.0 0.0 0.0\n", "").replace(
+        "pair_style lubricated/springdashpot", "fix hold base setforce 0.0 0.0 0.0\npair_style lubricated/springdashpot")
+    result = lmp(first + "clear\nunits si\n" + body + "clear\nunits si\n" + early.replace(
+        'print "RESULT e', 'print "RESULT early'))
+    assert result["first"] == pytest.approx(0.9, rel=TIGHT)
+    assert result["e"] == pytest.approx(0.9, rel=TIGHT)
+    assert result["early"] == pytest.approx(0.928431933052934, rel=1e-6)
+    assert "fix hold setforce was defined before the plugin was loaded" in lmp.log
+
+
 def test_two_held_atoms_exert_nothing(lmp):
     """Two overlapping atoms that neither moves: no force, no energy (nothing moves)."""
     script = frozen_pair(0.9, "freeze", gap0=-0.1, steps=1).replace("group base id 2", "group base id 1 2")
