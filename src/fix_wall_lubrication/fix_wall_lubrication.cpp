@@ -19,6 +19,7 @@
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "update.h"
 #include "utils.h"
 
@@ -32,8 +33,10 @@ namespace lub = lubricated;
 
 static constexpr const char *STYLE = "Fix wall/lubrication";
 
-FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), contact_mass(lmp)
 {
+  ContactMass::watch_setforce(lmp);    // again after a `clear`
   if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR, "{} requires atom_style sphere (per-atom radius and rmass)", STYLE);
 
@@ -121,6 +124,7 @@ void FixWallLubrication::init()
   for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
     midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
   pair = dynamic_cast<PairLubricatedSpringDashpot *>(force->pair_match("lubricated/springdashpot", 1));
+  contact_mass.init(STYLE, !pair);    // the pair style logs them where there is one
   for (int i = 0; i < atom->nlocal; i++)
     if ((atom->mask[i] & groupbit) && !(atom->radius[i] > 0.0))
       error->one(FLERR, "{}: atom {} has diameter {} (allowed: > 0; a point particle has no contact "
@@ -217,9 +221,8 @@ void FixWallLubrication::compute_walls(bool defer_films)
   }
   const double kick_time = lub::film_kick_time(update->dt, when != lub::Evaluation::step,
                                                when == lub::Evaluation::midpoint_start);
-
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
+  // Both walls on atom i of contact mass `mass`.
+  auto walls_of_atom = [&](int i, double mass) __attribute__((always_inline)) {
     const double r = radius[i];
     // side = +1: lo wall, normal along +axis; side = -1: hi wall, normal along -axis.
     for (int side = 1; side >= -1; side -= 2) {
@@ -233,19 +236,19 @@ void FixWallLubrication::compute_walls(bool defer_films)
             history[i][(side == 1 ? 0 : HISTORY_PER_WALL) + k] = 0.0;
         continue;
       }
-      const lub::NormalForce fn = lub::normal_force(model, gap, r, rmass[i], u_n, when);
+      const lub::NormalForce fn = lub::normal_force(model, gap, r, mass, u_n, when);
       double force = side * fn.total();
       if (defer_films) {    // applied in post_force, within the atom's film budget
         force = side * fn.contact;
         film_force[i] += side * fn.lubrication;
-        film_load[i] += lub::film_share(fn.lubrication, rmass[i], u_n, kick_time);
+        film_load[i] += lub::film_share(fn.lubrication, mass, u_n, kick_time);
       }
       f[i][axis] += force;
       local_sums[0] += fn.energy;
       local_sums[1 + axis] += force;
       if (tangential_on) {
         double ft[3] = {0.0, 0.0, 0.0}, torque[3] = {0.0, 0.0, 0.0};
-        tangential(i, side, gap, u_n, fn.contact, ft, torque);
+        tangential(i, side, gap, u_n, fn.contact, mass, ft, torque);
         for (int d = 0; d < 3; d++) {
           f[i][d] += ft[d];
           atom->torque[i][d] += torque[d];
@@ -253,12 +256,27 @@ void FixWallLubrication::compute_walls(bool defer_films)
         }
       }
     }
+  };
+
+  // m_e = m; the body's mass for an atom of a rigid body; an immovable atom is left alone.
+  if (!contact_mass.active()) {
+    for (int i = 0; i < nlocal; i++)
+      if (mask[i] & groupbit) walls_of_atom(i, rmass[i]);
+    return;
   }
+  // Atoms change index only where the lists are rebuilt (or a run starts).
+  if (neighbor->ago == 0 || update->setupflag || static_cast<int>(inverse_mass.size()) < nlocal) {
+    if (static_cast<int>(inverse_mass.size()) < nlocal) inverse_mass.resize(atom->nmax);
+    contact_mass.fill(inverse_mass.data());
+  }
+  for (int i = 0; i < nlocal; i++)
+    if ((mask[i] & groupbit) && inverse_mass[i] > 0.0) walls_of_atom(i, 1.0 / inverse_mass[i]);
 }
 
-// Tangential force and torque on i from the wall on this side (tangential.h, m_e = m).
+// Tangential force and torque on i from the wall on this side (tangential.h, m_e = mass; the
+// rolling resistance with the sphere's own inertia).
 void FixWallLubrication::tangential(int i, int side, double gap, double u_n, double normal_force,
-                                    double *force, double *torque)
+                                    double mass, double *force, double *torque)
 {
   const double r = atom->radius[i], m = atom->rmass[i];
   const double *v = atom->v[i], *w = atom->omega[i];
@@ -267,7 +285,7 @@ void FixWallLubrication::tangential(int i, int side, double gap, double u_n, dou
   const lub::Vec3 omega{w[0], w[1], w[2]};
   const lub::Vec3 s = lub::tangential_part(
       lub::minus(lub::Vec3{v[0], v[1], v[2]}, lub::cross(lub::scaled(omega, r), n)), n);
-  const double m_t = lub::tangential_mass_ratio * m;
+  const double m_t = lub::tangential_mass_ratio * mass;
 
   lub::Vec3 f;
   if (history) {

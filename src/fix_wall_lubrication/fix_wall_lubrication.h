@@ -9,6 +9,7 @@
 
 #include "fix.h"
 
+#include "contact_mass/contact_mass.h"
 #include "lubricated/normal_model.h"
 #include "lubricated/tangential.h"
 
@@ -58,8 +59,8 @@ class FixWallLubrication : public Fix {
   static constexpr int HISTORY_PER_WALL = 4, HISTORY_SIZE = 2 * HISTORY_PER_WALL;
   double **history = nullptr;
   bool keeps_history() const { return coeffs.friction > 0.0; }
-  void tangential(int i, int side, double gap, double u_n, double normal_force, double *force,
-                  double *torque);
+  void tangential(int i, int side, double gap, double u_n, double normal_force, double mass,
+                  double *force, double *torque);
   int axis = -1;                  // 0, 1, 2 for xplane, yplane, zplane
   bool has_lo = false, has_hi = false;
   double lo = 0.0, hi = 0.0;      // wall positions (box units)
@@ -73,6 +74,9 @@ class FixWallLubrication : public Fix {
   class PairLubricatedSpringDashpot *pair = nullptr;
   std::vector<double> film_force, film_load;
   bool films_pending = false;
+  // Immovable atoms (skipped: the wall cannot move them) and rigid bodies (m_e = M_body).
+  ContactMass contact_mass;
+  std::vector<double> inverse_mass;
   void compute_walls(bool defer_films);
   void apply_films();
 };

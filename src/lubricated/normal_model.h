@@ -8,7 +8,8 @@
 //   u_n   (v_i - v_j) . n, > 0 when the surfaces separate; overlap rate d_dot = -u_n;
 //         the velocity over the last step of the force-evaluation points: velocity
 //         Verlet's mid-step velocity, V^n under fix nve/sphere/midpoint;
-//   m_e   reduced mass m_i m_j / (m_i + m_j); m_i for a wall;
+//   m_e   reduced mass m_i m_j / (m_i + m_j); m_i for a wall or a partner that cannot move
+//         (src/contact_mass for LAMMPS);
 //   force on i = (contact + lubrication) n, on j the opposite; energy = k d^2 / 2.
 #pragma once
 
@@ -238,6 +239,15 @@ inline NormalForce normal_force(const NormalModel &m, double gap, double radius,
 inline double reduced_mass(double m_i, double m_j)
 {
   return m_i * m_j / (m_i + m_j);
+}
+
+// The same from inverse masses, where 0 stands for a partner no contact moves (m_e = m_i
+// against it); 0 where neither moves: such a pair exerts no force (the branch-free forms
+// above give 0; normal_force() needs m_e > 0, engines skip these pairs).
+__attribute__((always_inline)) inline double reduced_mass_of_inverses(double inverse_i, double inverse_j)
+{
+  const double sum = inverse_i + inverse_j;
+  return sum > 0.0 ? 1.0 / sum : 0.0;
 }
 
 }    // namespace lubricated

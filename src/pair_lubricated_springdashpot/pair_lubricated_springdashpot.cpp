@@ -32,14 +32,15 @@ namespace lub = lubricated;
 
 static constexpr const char *STYLE = "Pair style lubricated/springdashpot";
 
-PairLubricatedSpringDashpot::PairLubricatedSpringDashpot(LAMMPS *lmp) : Pair(lmp)
+PairLubricatedSpringDashpot::PairLubricatedSpringDashpot(LAMMPS *lmp) : Pair(lmp), contact_mass(lmp)
 {
+  ContactMass::watch_setforce(lmp);    // again after a `clear`
   single_enable = 1;
   single_extra = 3;    // contact force, lubrication force, normalised gap
   svector = new double[single_extra];
   finitecutflag = 1;
   restartinfo = 1;
-  comm_forward = comm_reverse = 1;    // the film budget: scales forward, loads reverse
+  comm_forward = comm_reverse = 1;    // the film budget: scales forward, loads reverse; masses
 }
 
 PairLubricatedSpringDashpot::~PairLubricatedSpringDashpot()
@@ -217,6 +218,10 @@ void PairLubricatedSpringDashpot::init_style()
     utils::logmesg(lmp, "{}: {}\n", STYLE, film_budget ? "films within each sphere's many-body budget (limit atom)"
                                                        : "each film within its own cap only (limit pair)");
 
+  // Immovable atoms and rigid bodies, found anew at every run (fixes and groups may change).
+  contact_mass.init(STYLE, true);
+  inverse_mass_on = contact_mass.active();
+
   // A dry model acts only in contact: a radius-based list is enough and cheapest. The film
   // acts beyond contact, where radius-based lists lose pairs on rebuild (LAMMPS PR #4685),
   // so a wet model asks for a list with per-type cutoffs that cover the whole film.
@@ -301,6 +306,7 @@ void PairLubricatedSpringDashpot::reset_dt()
 void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  if (inverse_mass_on && (neighbor->ago == 0 || update->setupflag)) update_inverse_mass();
   if (film_budget) begin_film_budget();
   // A scene pays only for what it uses: one loop per combination.
   if (any_tangential) {
@@ -314,6 +320,16 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
   }
   if (film_budget) finish_film_budget();
   if (vflag_fdotr) virial_fdotr_compute();
+}
+
+// Owned atoms' inverse contact masses, then the ghosts' (a rigid body's mass is known to the
+// owner of the atom only). Atoms change rank and index only when the lists are rebuilt.
+void PairLubricatedSpringDashpot::update_inverse_mass()
+{
+  if (static_cast<int>(inverse_mass.size()) < atom->nlocal + atom->nghost) inverse_mass.resize(atom->nmax);
+  contact_mass.fill(inverse_mass.data());
+  comm_what = COMM_MASS;
+  comm->forward_comm(this);
 }
 
 // Loads start from the walls' films (computed in their pre_force) for owned atoms, 0 elsewhere.
@@ -349,9 +365,12 @@ void PairLubricatedSpringDashpot::finish_film_budget()
     comm->reverse_comm(this);
   }
   double *load = load_of_atom.data(), *scale = scale_of_atom.data();
+  // An atom no contact moves is not part of the state the budget protects: its load limits
+  // nothing (its partners' own loads count their shares of these films).
+  const double *held = inverse_mass_on ? inverse_mass.data() : nullptr;
   int over = 0;
   for (int i = 0; i < nlocal; i++) {
-    scale[i] = lub::film_scale_of_load(load[i]);
+    scale[i] = (held && held[i] == 0.0) ? 1.0 : lub::film_scale_of_load(load[i]);
     over |= scale[i] < 1.0;
   }
   // Most steps of most beds leave every film whole: then no scales travel and nothing is redone.
@@ -382,13 +401,15 @@ void PairLubricatedSpringDashpot::finish_film_budget()
 int PairLubricatedSpringDashpot::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
                                                    int * /*pbc*/)
 {
-  for (int k = 0; k < n; k++) buf[k] = scale_of_atom[list[k]];
+  const double *values = comm_what == COMM_MASS ? inverse_mass.data() : scale_of_atom.data();
+  for (int k = 0; k < n; k++) buf[k] = values[list[k]];
   return n;
 }
 
 void PairLubricatedSpringDashpot::unpack_forward_comm(int n, int first, double *buf)
 {
-  for (int k = 0; k < n; k++) scale_of_atom[first + k] = buf[k];
+  double *values = comm_what == COMM_MASS ? inverse_mass.data() : scale_of_atom.data();
+  for (int k = 0; k < n; k++) values[first + k] = buf[k];
 }
 
 int PairLubricatedSpringDashpot::pack_reverse_comm(int n, int first, double *buf)
@@ -446,10 +467,13 @@ inline void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const 
   }
   lub::Vec3 roll;
   if (tm.rolling_active() && gap < 0.0) {
+    // The spheres' own inertia (also in a rigid body); against an immovable atom the other's.
     const double inertia_i = 0.4 * atom->rmass[i] * radi * radi;
     const double inertia_j = 0.4 * atom->rmass[j] * radj * radj;
-    roll = lub::rolling_torque(tm, n, lub::minus(wi, wj), radi * radj / (radi + radj),
-                               inertia_i * inertia_j / (inertia_i + inertia_j), normal_force);
+    double inertia = inertia_i * inertia_j / (inertia_i + inertia_j);
+    if (inverse_mass_on && inverse_mass[i] == 0.0) inertia = inertia_j;
+    if (inverse_mass_on && inverse_mass[j] == 0.0) inertia = inertia_i;
+    roll = lub::rolling_torque(tm, n, lub::minus(wi, wj), radi * radj / (radi + radj), inertia, normal_force);
   }
   const lub::Vec3 nxf = lub::cross(n, f);
   ft[0] = f.x, ft[1] = f.y, ft[2] = f.z;
@@ -476,7 +500,8 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
   double **x = atom->x, **f = atom->f;
   const int *type = atom->type;
   const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
-  const vector_pairs::Atoms atoms{x[0], atom->v[0], atom->radius, atom->rmass};
+  const vector_pairs::Atoms atoms{x[0], atom->v[0], atom->radius, atom->rmass,
+                                  inverse_mass_on ? inverse_mass.data() : nullptr};
   constexpr int chunk = 256;
   double fpair[chunk], energy[chunk], film[chunk], capacity[chunk];
   int done[chunk], rest[chunk];
@@ -502,12 +527,16 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
   };
   // At most one chunk of pairs of one model.
   auto film_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
-    vector_pairs::film_only(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+    if (atoms.inverse_mass) vector_pairs::film_only_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+    else vector_pairs::film_only(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
     for (int c = 0; c < n; c++) apply(pair_i[c], pair_j[c], fpair[c], 0.0);
     if (budget) record_films(pair_i, pair_j, n);
   };
   auto kept_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
-    vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+    if (atoms.inverse_mass)
+      vector_pairs::contact_or_film_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+    else
+      vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
     int nrest = 0;
     for (int c = 0; c < n; c++) {
       // Branch-free (which pairs are done follows no pattern): the others have fpair = 0 (and
@@ -572,6 +601,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   const double dt = update->dt;
   // Full-step velocities at a run start, used by each integrator its own way (contact_step.h).
   const lub::Evaluation when = lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
+  const double *inverse = inverse_mass_on ? inverse_mass.data() : nullptr;
 
   const int inum = list->inum;
   const int *ilist = list->ilist;
@@ -694,7 +724,12 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     const double r = std::sqrt(rsq);
     const double rinv = 1.0 / r;
     const double u_n = (dvx * delx + dvy * dely + dvz * delz) * rinv;
-    const double m_e = lub::reduced_mass(rmass[i], rmass[j]);
+    const double m_e = inverse ? lub::reduced_mass_of_inverses(inverse[i], inverse[j])
+                               : lub::reduced_mass(rmass[i], rmass[j]);
+    if (m_e == 0.0) {    // neither atom can move (the vectorised loops give such pairs 0)
+      forget();
+      return;
+    }
     const lub::NormalForce fn = lub::normal_force(model, r - radsum, film, m_e, u_n, when);
 
     const double fpair = fn.total() * rinv;
@@ -759,7 +794,9 @@ double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, d
   for (int d = 0; d < 3; d++) u_n += (v[i][d] - v[j][d]) * (x[i][d] - x[j][d]);
   u_n /= r;
   if (!model.acts(r - radsum, lub_radius, u_n)) return 0.0;
-  const double m_e = lub::reduced_mass(atom->rmass[i], atom->rmass[j]);
+  const double m_e = inverse_mass_on ? lub::reduced_mass_of_inverses(inverse_mass[i], inverse_mass[j])
+                                     : lub::reduced_mass(atom->rmass[i], atom->rmass[j]);
+  if (m_e == 0.0) return 0.0;
   const lub::NormalForce fn = lub::normal_force(model, r - radsum, lub_radius, m_e, u_n);
   fforce = fn.total() / r;
   svector[0] = fn.contact;
@@ -808,6 +845,6 @@ double PairLubricatedSpringDashpot::memory_usage()
        film_i.capacity() + film_j.capacity() + group_count.capacity() + group_keys.capacity() +
        record_i.capacity() + record_j.capacity()) *
           sizeof(int) +
-      (step_reach.capacity() + load_of_atom.capacity() + scale_of_atom.capacity() + record_force.capacity()) *
+      (step_reach.capacity() + inverse_mass.capacity() + load_of_atom.capacity() + scale_of_atom.capacity() + record_force.capacity()) *
           sizeof(double);
 }

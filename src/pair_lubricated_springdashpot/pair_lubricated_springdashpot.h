@@ -9,6 +9,7 @@
 
 #include "pair.h"
 
+#include "contact_mass/contact_mass.h"
 #include "lubricated/normal_model.h"
 #include "lubricated/tangential.h"
 
@@ -80,7 +81,7 @@ class PairLubricatedSpringDashpot : public Pair {
   std::vector<int> record_i, record_j;
   std::vector<double> record_force;
   int nrecord = 0;
-  enum { COMM_LOAD, COMM_SCALE } comm_what = COMM_LOAD;
+  enum { COMM_LOAD, COMM_SCALE, COMM_MASS } comm_what = COMM_LOAD;
   void begin_film_budget();
   void reserve_records(int more);
   __attribute__((always_inline)) inline void record_film(int i, int j, double film, double share,
@@ -94,6 +95,14 @@ class PairLubricatedSpringDashpot : public Pair {
     nrecord += film != 0.0;
   }
   void finish_film_budget();
+
+  // Immovable atoms and rigid bodies (contact_mass.h): where a run has any, the inverse mass
+  // a contact moves, per owned and ghost atom (0 immovable), rebuilt with the neighbor lists;
+  // otherwise (inverse_mass_on false) m_e comes from rmass as it always did.
+  ContactMass contact_mass;
+  bool inverse_mass_on = false;
+  std::vector<double> inverse_mass;
+  void update_inverse_mass();
 
   void allocate();
   int ntypes_alloc = 0;

@@ -19,12 +19,14 @@ namespace lub = lubricated;
 namespace LAMMPS_NS {
 namespace vector_pairs {
 
-  // What every pair needs: separation, normal velocity, radii and reduced mass.
+  // What every pair needs: separation, normal velocity, radii and reduced mass (INVERSE:
+  // from the inverse contact masses; 0 for two immovable atoms, whose forces are then 0).
   struct Geometry {
     double delx, dely, delz, r, rinv, u_n, radsum, m_e;
     lub::FilmRadius film;
   };
 
+  template <bool INVERSE>
   __attribute__((always_inline)) static inline Geometry geometry(const Atoms &atoms, int i, int j)
   {
     const double *__restrict x = atoms.x;
@@ -42,11 +44,12 @@ namespace vector_pairs {
     const double radi = atoms.radius[i], radj = atoms.radius[j];
     g.radsum = radi + radj;
     g.film = lub::film_radius_pair(radi, radj);
-    g.m_e = atoms.rmass[i] * atoms.rmass[j] / (atoms.rmass[i] + atoms.rmass[j]);
+    if (INVERSE) g.m_e = lub::reduced_mass_of_inverses(atoms.inverse_mass[i], atoms.inverse_mass[j]);
+    else g.m_e = atoms.rmass[i] * atoms.rmass[j] / (atoms.rmass[i] + atoms.rmass[j]);
     return g;
   }
 
-  template <bool GRID>
+  template <bool GRID, bool INVERSE>
   __attribute__((always_inline)) static inline void film_only_loop(
       const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
       const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
@@ -54,7 +57,7 @@ namespace vector_pairs {
   {
     const double dt = model.step.dt, inv_dt = model.step.inv_dt;
     for (int c = 0; c < n; c++) {
-      const Geometry g = geometry(atoms, pair_i[c], pair_j[c]);
+      const Geometry g = geometry<INVERSE>(atoms, pair_i[c], pair_j[c]);
       const double film = lub::film_force_apart<GRID>(model.lubrication, g.r - g.radsum, g.film, g.m_e,
                                                       g.u_n, dt, inv_dt);
       fpair[c] = g.rinv * film;
@@ -63,7 +66,7 @@ namespace vector_pairs {
     }
   }
 
-  template <bool WET, bool GRID>
+  template <bool WET, bool GRID, bool INVERSE>
   __attribute__((always_inline)) static inline void contact_or_film_loop(
       const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
       const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
@@ -71,7 +74,7 @@ namespace vector_pairs {
   {
     const double dt = model.step.dt, inv_dt = model.step.inv_dt;
     for (int c = 0; c < n; c++) {
-      const Geometry g = geometry(atoms, pair_i[c], pair_j[c]);
+      const Geometry g = geometry<INVERSE>(atoms, pair_i[c], pair_j[c]);
       const double gap = g.r - g.radsum;
       bool sustained;
       const lub::NormalForce contact =
@@ -91,14 +94,25 @@ namespace vector_pairs {
     }
   }
 
+  // Each entry point compiles its own loops (the plain ones exactly as without contact masses).
   VECTOR_PAIRS_CLONES
   void film_only(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
                  const int *pair_j, int n, double *fpair, double *film, double *capacity)
   {
     if (model.lubrication.grid_spacing > 0.0)
-      film_only_loop<true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+      film_only_loop<true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
     else
-      film_only_loop<false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+      film_only_loop<false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+  }
+
+  VECTOR_PAIRS_CLONES
+  void film_only_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
+                            const int *pair_j, int n, double *fpair, double *film, double *capacity)
+  {
+    if (model.lubrication.grid_spacing > 0.0)
+      film_only_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+    else
+      film_only_loop<false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
   }
 
   VECTOR_PAIRS_CLONES
@@ -108,11 +122,25 @@ namespace vector_pairs {
   {
     const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
     if (!wet)
-      contact_or_film_loop<false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+      contact_or_film_loop<false, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
     else if (grid)
-      contact_or_film_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+      contact_or_film_loop<true, true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
     else
-      contact_or_film_loop<true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+      contact_or_film_loop<true, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  }
+
+  VECTOR_PAIRS_CLONES
+  void contact_or_film_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
+                                  const int *pair_j, int n, double *fpair, double *film, double *capacity,
+                                  double *energy, int *done)
+  {
+    const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
+    if (!wet)
+      contact_or_film_loop<false, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+    else if (grid)
+      contact_or_film_loop<true, true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+    else
+      contact_or_film_loop<true, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
   }
 
 }    // namespace vector_pairs

@@ -16,9 +16,11 @@
 namespace LAMMPS_NS {
 namespace vector_pairs {
 
-  // Per-atom data: x and v 3 per atom, contiguous (LAMMPS's x[0], v[0]).
+  // Per-atom data: x and v 3 per atom, contiguous (LAMMPS's x[0], v[0]). inverse_mass: the
+  // inverse contact masses (contact_mass.h) where a run has immovable atoms or rigid bodies,
+  // else nullptr (m_e from rmass).
   struct Atoms {
-    const double *x, *v, *radius, *rmass;
+    const double *x, *v, *radius, *rmass, *inverse_mass;
   };
 
   // The pairs (pair_i[c], pair_j[c]), c < n, all of model `model` (exact integration, a step).
@@ -36,6 +38,13 @@ namespace vector_pairs {
   void contact_or_film(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
                        const int *pair_j, int n, double *fpair, double *film, double *capacity,
                        double *energy, int *done);
+
+  // The same with m_e from atoms.inverse_mass (a pair of two immovable atoms: all 0, done).
+  void film_only_by_inverse(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
+                            const int *pair_j, int n, double *fpair, double *film, double *capacity);
+  void contact_or_film_by_inverse(const Atoms &atoms, const lubricated::NormalModel &model,
+                                  const int *pair_i, const int *pair_j, int n, double *fpair,
+                                  double *film, double *capacity, double *energy, int *done);
 
 }    // namespace vector_pairs
 }    // namespace LAMMPS_NS

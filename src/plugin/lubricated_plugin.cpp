@@ -6,6 +6,7 @@
 
 #include "lammps.h"
 
+#include "contact_mass/contact_mass.h"
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_fluid_drag/fix_fluid_drag.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
@@ -98,4 +99,7 @@ void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.info = "contact history of pair_style lubricated/springdashpot";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_history;
   (*reg)(&plugin, lmp);
+
+  // Which fix setforce holds its atoms (contact_mass.h): noted as each is created.
+  ContactMass::watch_setforce(static_cast<LAMMPS *>(lmp));
 }

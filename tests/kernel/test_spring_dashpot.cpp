@@ -75,3 +75,28 @@ TEST(NormalForce, SignsAndEnergy)
   EXPECT_EQ(apart.total(), 0.0);
   EXPECT_EQ(apart.energy, 0.0);
 }
+
+TEST(NormalForce, ReducedMassOfInverses)
+{
+  // Free pair: the reduced mass; a partner no contact moves (inverse 0): the other's mass, as
+  // on a wall; neither moves: 0, and then no force at all (issue 17).
+  EXPECT_DOUBLE_EQ(reduced_mass_of_inverses(1.0 / 2.0, 1.0 / 6.0), reduced_mass(2.0, 6.0));
+  EXPECT_EQ(reduced_mass_of_inverses(1.0 / 3.0, 0.0), 1.0 / (1.0 / 3.0));
+  EXPECT_EQ(reduced_mass_of_inverses(0.0, 0.25), 4.0);
+  EXPECT_EQ(reduced_mass_of_inverses(0.0, 0.0), 0.0);
+  // The vectorised loops take such pairs through the branch-free forms, which give no force
+  // with m_e = 0 (normal_force() needs m_e > 0: the engines skip these pairs before it).
+  Coefficients c;
+  c.e_dry = 0.9;
+  c.viscosity = 1e-3;
+  c.eps_activation = 0.1;
+  const NormalModel m = make_normal_model(c, Partner::particle, 1e-5);
+  const FilmRadius radius(1e-3);
+  bool sustained = false;
+  const NormalForce f = sustained_contact_force<false>(m, -1e-6, radius, 0.0, -0.01, sustained);
+  EXPECT_TRUE(sustained);
+  EXPECT_EQ(f.total(), 0.0);
+  EXPECT_EQ(f.energy, 0.0);
+  for (double gap : {1e-6, 5e-5})
+    EXPECT_EQ(film_force_apart<false>(m.lubrication, gap, radius, 0.0, -0.01, m.step.dt, m.step.inv_dt), 0.0);
+}

@@ -1,0 +1,139 @@
+/* ----------------------------------------------------------------------
+   The mass a contact moves (see contact_mass.h)
+------------------------------------------------------------------------- */
+
+#include "contact_mass.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix.h"
+#include "modify.h"
+#include "utils.h"
+
+#include <cstdlib>
+#include <dlfcn.h>
+#include <iterator>
+#include <map>
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+// The setforce fixes created through the recording factory: whether each holds its atoms.
+struct SetforceRecord {
+  const LAMMPS *lmp;
+  std::string id;
+  bool holds;
+};
+std::map<const Fix *, SetforceRecord> setforce_records;
+Modify::FixCreator builtin_setforce = nullptr;
+
+bool zero_constant(const char *word)
+{
+  char *end = nullptr;
+  const double value = strtod(word, &end);
+  return end != word && *end == '\0' && value == 0.0;
+}
+
+// The built-in factory, noting `fix ID group setforce fx fy fz [region R]`: holds with three
+// constant zeros and nothing after them.
+Fix *create_recorded_setforce(LAMMPS *lmp, int narg, char **arg)
+{
+  Fix *fix = builtin_setforce(lmp, narg, arg);
+  setforce_records[fix] = {lmp, fix->id,
+                           narg == 6 && zero_constant(arg[3]) && zero_constant(arg[4]) && zero_constant(arg[5])};
+  return fix;
+}
+
+// 1 holds, 0 does not, -1 created before the plugin was loaded (arguments unknown).
+int setforce_holds(const LAMMPS *lmp, const Fix *fix)
+{
+  const auto found = setforce_records.find(fix);
+  if (found == setforce_records.end() || found->second.lmp != lmp || found->second.id != fix->id) return -1;
+  return found->second.holds ? 1 : 0;
+}
+
+}    // namespace
+
+void ContactMass::watch_setforce(LAMMPS *lmp)
+{
+  if (!lmp->modify || !lmp->modify->fix_map) return;
+  auto &factories = *lmp->modify->fix_map;
+  const auto setforce = factories.find("setforce");
+  if (setforce == factories.end() || setforce->second == &create_recorded_setforce) return;
+  builtin_setforce = setforce->second;
+  setforce->second = &create_recorded_setforce;
+  // The map now points into this library: keep it mapped for the process's lifetime, so that a
+  // `plugin unload` (dlclose) cannot leave `fix setforce` calling unmapped code.
+  static bool pinned = false;
+  Dl_info self;
+  if (!pinned && dladdr(reinterpret_cast<void *>(&create_recorded_setforce), &self) && self.dli_fname)
+    pinned = dlopen(self.dli_fname, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE) != nullptr;
+  // A map without the recorder belongs to a new Modify (plugin load, or after `clear`): the
+  // records of this instance's earlier fixes are void.
+  for (auto r = setforce_records.begin(); r != setforce_records.end();)
+    r = r->second.lmp == lmp ? setforce_records.erase(r) : std::next(r);
+}
+
+void ContactMass::init(const std::string &who, bool log)
+{
+  held_bits = integrated_bits = 0;
+  any_integrator = false;
+  rigid.clear();
+  std::vector<std::string> unknown;
+  for (Fix *fix : modify->get_fix_list()) {
+    const std::string style = fix->style;
+    if (utils::strmatch(style, "^freeze") || utils::strmatch(style, "^move$") ||
+        utils::strmatch(style, "^nve/noforce$"))
+      held_bits |= fix->groupbit;
+    else if (utils::strmatch(style, "^setforce$")) {
+      const int holds = setforce_holds(lmp, fix);
+      if (holds > 0) held_bits |= fix->groupbit;
+      if (holds < 0) unknown.emplace_back(fix->id);
+    }
+    if (fix->time_integrate) {
+      any_integrator = true;
+      integrated_bits |= fix->groupbit;
+    }
+    if (fix->rigid_flag) rigid.push_back(fix);
+  }
+
+  double local[2] = {0.0, 0.0}, total[2];    // immovable, in rigid bodies
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (held(mask[i])) local[0] += 1.0;
+    else
+      for (Fix *fix : rigid)
+        if (mask[i] & fix->groupbit) {
+          local[1] += 1.0;
+          break;
+        }
+  }
+  MPI_Allreduce(local, total, 2, MPI_DOUBLE, MPI_SUM, world);
+  any = total[0] + total[1] > 0.0;
+  if (!log || comm->me != 0) return;
+  for (const auto &id : unknown)
+    error->warning(FLERR, "{}: fix {} setforce was defined before the plugin was loaded (or, after a "
+                   "clear, before the plugin's first style): its arguments are unknown, its atoms are not "
+                   "taken as immovable", who, id);
+  if (any)
+    utils::logmesg(lmp, "{}: {:.0f} immovable atoms (infinite mass in contacts), {:.0f} in rigid bodies "
+                   "(the body's mass)\n", who, total[0], total[1]);
+}
+
+void ContactMass::fill(double *inverse)
+{
+  const int *mask = atom->mask;
+  const double *rmass = atom->rmass;
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; i++) inverse[i] = held(mask[i]) ? 0.0 : 1.0 / rmass[i];
+  for (Fix *fix : rigid) {
+    int dim;
+    const auto body = static_cast<const int *>(fix->extract("body", dim));
+    const auto mass = static_cast<const double *>(fix->extract("masstotal", dim));
+    if (!body || !mass) continue;    // a rigid fix without them: its atoms keep their own mass
+    for (int i = 0; i < nlocal; i++)
+      if ((mask[i] & fix->groupbit) && !held(mask[i]) && body[i] >= 0) inverse[i] = 1.0 / mass[body[i]];
+  }
+}
