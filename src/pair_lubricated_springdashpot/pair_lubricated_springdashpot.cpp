@@ -8,6 +8,7 @@
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_wall_lubrication/fix_wall_lubrication.h"
+#include "lubricated/contact_network.h"
 #include "lubricated/film_budget.h"
 
 #include "atom.h"
@@ -40,7 +41,9 @@ PairLubricatedSpringDashpot::PairLubricatedSpringDashpot(LAMMPS *lmp) : Pair(lmp
   svector = new double[single_extra];
   finitecutflag = 1;
   restartinfo = 1;
-  comm_forward = comm_reverse = 1;    // the film budget: scales forward, loads reverse; masses
+  // The film budget: scales forward, loads reverse (1 value per atom); the contact masses
+  // forward (1); the contact-network check: its sums both ways (lub::network_values).
+  comm_forward = comm_reverse = lub::network_values;
 }
 
 PairLubricatedSpringDashpot::~PairLubricatedSpringDashpot()
@@ -66,6 +69,8 @@ void PairLubricatedSpringDashpot::allocate()
   models.assign((n + 1) * (n + 1), lub::NormalModel());
   tmodels.assign((n + 1) * (n + 1), lub::TangentialModel());
   max_reach.assign((n + 1) * (n + 1), 0.0);
+  network_load.assign((n + 1) * (n + 1), 0.0);
+  network_bound.assign((n + 1) * (n + 1), 0.0);
   maxrad.assign(n + 1, 0.0);
 }
 
@@ -147,6 +152,8 @@ void PairLubricatedSpringDashpot::init_style()
 
   const int n = atom->ntypes;
   any_wet = any_tangential = false;
+  network_check = network_warned = false;    // set by init_one (set_network_loads)
+  network_next = 0;                          // the first step of the run
   bool any_friction = false;
   std::set<std::string> advice;
   for (int i = 1; i <= n; i++)
@@ -261,6 +268,7 @@ double PairLubricatedSpringDashpot::init_one(int i, int j)
   models[index(i, j)] = models[index(j, i)] =
       lub::make_normal_model(c, lub::Partner::particle, update->dt);
   tmodels[index(i, j)] = tmodels[index(j, i)] = lub::make_tangential_model(c, update->dt);
+  set_network_loads(i, j);
   if (comm->me == 0) {
     // Report what was derived (k and c per unit reduced mass, the contact resolution).
     const lub::NormalModel &m = models[index(i, j)];
@@ -294,7 +302,25 @@ void PairLubricatedSpringDashpot::update_models()
             lub::make_normal_model(coeffs[index(i, j)], lub::Partner::particle, update->dt);
         tmodels[index(i, j)] = tmodels[index(j, i)] =
             lub::make_tangential_model(coeffs[index(i, j)], update->dt);
+        set_network_loads(i, j);
       }
+}
+
+// Load of a sustained contact of these types (contact_network.h): kappa + 2 gamma of its per-step
+// constants, and the larger of it and the tangential spring's (friction) for the upper bound.
+void PairLubricatedSpringDashpot::set_network_loads(int i, int j)
+{
+  const lub::NormalModel &m = models[index(i, j)];
+  const double dt = update->dt;
+  const double load = m.exact
+      ? lub::contact_load(m.step.stiffness_step, m.step.damping_step, dt)
+      : lub::contact_load(m.contact.stiffness_per_mass, m.contact.damping_per_mass, dt);
+  const lub::TangentialModel &tm = tmodels[index(i, j)];
+  const double bound =
+      tm.contact_active() ? std::max(load, lub::contact_load(tm.stiffness_step, tm.damping_step, dt)) : load;
+  network_load[index(i, j)] = network_load[index(j, i)] = load;
+  network_bound[index(i, j)] = network_bound[index(j, i)] = bound;
+  network_check = network_check || bound > lub::network_check_load;
 }
 
 // k = m_e (pi^2 + ln^2 e_d) / (N_c dt)^2 follows the time step when N_c is given.
@@ -401,6 +427,11 @@ void PairLubricatedSpringDashpot::finish_film_budget()
 int PairLubricatedSpringDashpot::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
                                                    int * /*pbc*/)
 {
+  if (comm_what == COMM_NETWORK) {
+    constexpr int nv = lub::network_values;
+    for (int k = 0; k < n; k++) std::copy_n(&network_sums[nv * list[k]], nv, buf + nv * k);
+    return nv * n;
+  }
   const double *values = comm_what == COMM_MASS ? inverse_mass.data() : scale_of_atom.data();
   for (int k = 0; k < n; k++) buf[k] = values[list[k]];
   return n;
@@ -408,19 +439,158 @@ int PairLubricatedSpringDashpot::pack_forward_comm(int n, int *list, double *buf
 
 void PairLubricatedSpringDashpot::unpack_forward_comm(int n, int first, double *buf)
 {
+  if (comm_what == COMM_NETWORK) {
+    std::copy_n(buf, lub::network_values * n, &network_sums[lub::network_values * first]);
+    return;
+  }
   double *values = comm_what == COMM_MASS ? inverse_mass.data() : scale_of_atom.data();
   for (int k = 0; k < n; k++) values[first + k] = buf[k];
 }
 
 int PairLubricatedSpringDashpot::pack_reverse_comm(int n, int first, double *buf)
 {
+  if (comm_what == COMM_NETWORK) {
+    std::copy_n(&network_sums[lub::network_values * first], lub::network_values * n, buf);
+    return lub::network_values * n;
+  }
   for (int k = 0; k < n; k++) buf[k] = load_of_atom[first + k];
   return n;
 }
 
 void PairLubricatedSpringDashpot::unpack_reverse_comm(int n, int *list, double *buf)
 {
+  if (comm_what == COMM_NETWORK) {
+    constexpr int nv = lub::network_values;
+    for (int k = 0; k < n; k++)
+      for (int q = 0; q < nv; q++) network_sums[nv * list[k] + q] += buf[nv * k + q];
+    return;
+  }
   for (int k = 0; k < n; k++) load_of_atom[list[k]] += buf[k];
+}
+
+// The network of contacts (lubricated/contact_network.h): per-atom sums over the contacts in
+// overlap now and a step ago among the pairs pass 1 kept, then each contact's lower quotient and
+// upper row. A lower quotient of 4 or more proves a mode that grows every step: ERROR. Where the
+// upper row reaches 4 (stability unproven) and the lower quotient 8/3 (growth likely): WARNING,
+// once per run.
+void PairLubricatedSpringDashpot::check_contact_network(int ncandidate)
+{
+  constexpr int nv = lub::network_values;
+  double **x = atom->x, **v = atom->v;
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost, newton_pair = force->newton_pair;
+  const double dt = update->dt;
+  if (static_cast<int>(network_sums.size()) < nv * nall) network_sums.resize(nv * atom->nmax);
+  std::fill(network_sums.begin(), network_sums.begin() + nv * nall, 0.0);
+  network_i.clear();
+  network_j.clear();
+  auto normal = [&](int i, int j, double *n) {
+    for (int d = 0; d < 3; d++) n[d] = x[i][d] - x[j][d];
+    return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  };
+  // The masses the contacts move (contact_mass.h): an immovable atom is not part of the state,
+  // its infinite mass drops its terms from the sums and quotients.
+  const double *inverse = inverse_mass_on ? inverse_mass.data() : nullptr;
+  auto mass = [&](int i) { return inverse ? (inverse[i] > 0.0 ? 1.0 / inverse[i] : INFINITY) : rmass[i]; };
+  auto pair_mass = [&](int i, int j) {
+    return inverse ? lub::reduced_mass_of_inverses(inverse[i], inverse[j]) : lub::reduced_mass(rmass[i], rmass[j]);
+  };
+  for (int c = 0; c < ncandidate; c++) {
+    const int i = candidate_i[c], j = candidate_j[c];
+    double n[3];
+    const double r = normal(i, j, n), gap = r - radius[i] - radius[j];
+    if (!(gap < 0.0) || r == 0.0) continue;
+    const double *vi = midpoint ? midpoint->step_velocity(i) : v[i];
+    const double *vj = midpoint ? midpoint->step_velocity(j) : v[j];
+    for (int d = 0; d < 3; d++) n[d] /= r;
+    const double u_n = (vi[0] - vj[0]) * n[0] + (vi[1] - vj[1]) * n[1] + (vi[2] - vj[2]) * n[2];
+    if (!(gap - u_n * dt < 0.0)) continue;    // in overlap a step ago too
+    const int t = index(type[i], type[j]);
+    const double m_e = pair_mass(i, j);
+    if (m_e == 0.0) continue;    // two immovable atoms
+    lub::add_network_contact(&network_sums[nv * i], network_load[t], network_bound[t], m_e, n);
+    if (newton_pair || j < nlocal)
+      lub::add_network_contact(&network_sums[nv * j], network_load[t], network_bound[t], m_e, n);
+    network_i.push_back(i);
+    network_j.push_back(j);
+  }
+  comm_what = COMM_NETWORK;
+  if (newton_pair) comm->reverse_comm(this);
+  comm->forward_comm(this);
+
+  // The largest lower quotient and upper row, and the largest upper row per unit load (for the
+  // advice), with the contact where each is reached.
+  struct {
+    double value;
+    int rank;
+  } lower{0.0, comm->me}, upper{0.0, comm->me}, reduced;
+  int worst_lower = -1, worst_upper = -1;
+  double unit_upper = 0.0;
+  for (std::size_t k = 0; k < network_i.size(); k++) {
+    const int i = network_i[k], j = network_j[k], t = index(type[i], type[j]);
+    double n[3];
+    const double r = normal(i, j, n);
+    for (int d = 0; d < 3; d++) n[d] /= r;
+    const double m_e = pair_mass(i, j);
+    const double *si = &network_sums[nv * i], *sj = &network_sums[nv * j];
+    const double row = lub::network_upper_row(network_bound[t], m_e, si, mass(i), sj, mass(j));
+    const double quotient = lub::network_lower_quotient(network_load[t], m_e, n, si, mass(i), sj, mass(j));
+    if (quotient > lower.value) lower.value = quotient, worst_lower = static_cast<int>(k);
+    if (row > upper.value) upper.value = row, worst_upper = static_cast<int>(k);
+    unit_upper = std::max(unit_upper, row / network_bound[t]);
+  }
+  MPI_Allreduce(&lower, &reduced, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
+  const bool unstable = reduced.value >= lub::stable_network_load;
+  if (!unstable) {
+    if (network_warned || reduced.value < lub::likely_unstable_network_load) return;
+    MPI_Allreduce(&upper, &reduced, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
+    if (reduced.value < lub::stable_network_load) return;
+    network_warned = true;
+  }
+  // What the owner of the worst contact knows, for every rank's message.
+  double info[7] = {0.0};
+  const int worst = unstable ? worst_lower : worst_upper;
+  if (comm->me == reduced.rank && worst >= 0) {
+    const int i = network_i[worst], j = network_j[worst];
+    info[0] = reduced.value;
+    info[1] = std::min(type[i], type[j]);
+    info[2] = std::max(type[i], type[j]);
+    info[3] = static_cast<double>(atom->tag[i]);
+    info[4] = static_cast<double>(atom->tag[j]);
+    info[5] = network_sums[nv * i + nv - 1];
+    info[6] = network_sums[nv * j + nv - 1];
+  }
+  MPI_Bcast(info, 7, MPI_DOUBLE, reduced.rank, world);
+  double largest_unit = 0.0, largest_lower = 0.0;
+  MPI_Allreduce(&unit_upper, &largest_unit, 1, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&lower.value, &largest_lower, 1, MPI_DOUBLE, MPI_MAX, world);
+  const int itype = static_cast<int>(info[1]), jtype = static_cast<int>(info[2]);
+  const lub::Coefficients &c = coeffs[index(itype, jtype)];
+  const double steps = c.steps_per_contact(dt);
+  // N_c at which the upper bound of this packing would be below 4 (same e_d and e_t).
+  const double needed = lub::contact_steps_for_load(
+      c.e_dry, c.friction > 0.0 ? c.tangential_restitution() : -1.0, lub::stable_network_load / largest_unit);
+  const std::string duration = c.t_contact > 0.0
+      ? fmt::format("tcontact = {:.6g} (N_c = t_c / dt = {:.3g})", c.t_contact, steps)
+      : fmt::format("ncontact = {:.6g}", steps);
+  const std::string remedy = c.t_contact > 0.0
+      ? fmt::format("a longer tcontact or a timestep <= {:.3g} (N_c >= {:.3g})", c.t_contact / needed, needed)
+      : fmt::format("ncontact >= {:.3g}", needed);
+  const std::string atoms = fmt::format("atoms {} ({} contacts) and {} ({})", static_cast<tagint>(info[3]),
+                                        info[5], static_cast<tagint>(info[4]), info[6]);
+  if (unstable)
+    error->all(FLERR, "{} types {} {}: {} is too short a contact for this packing: the contacts of {} "
+               "have a mode that grows every step (load {:.3g} >= 4; the springs and dashpots of a bed are "
+               "stable under velocity Verlet only below 4: doc page, Dense beds: the contact network). Use {} "
+               "(which keeps every mode of this packing stable) or fewer contacts per sphere",
+               STYLE, itype, jtype, duration, atoms, info[0], remedy);
+  if (comm->me == 0)
+    error->warning(FLERR, "{} types {} {}: with {} the contact network of this packing is likely unstable: its "
+                   "load is at least {:.3g} (a growing mode is proven from 4; the largest load was at most 1.5 times "
+                   "this bound on random packings) and stability is not guaranteed ({} reach the upper bound {:.3g} "
+                   ">= 4). If the energy grows or atoms are lost, use {}", STYLE, itype, jtype, duration,
+                   largest_lower, atoms, info[0], remedy);
 }
 
 // Tangential force ft on i (on j: -ft) and the torques ti, tj of one pair (tangential.h);
@@ -667,6 +837,11 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
       if (TANGENTIAL && touched) keep |= touched[jj];
       ncandidate += keep;
     }
+  }
+
+  if (network_check && !update->setupflag && update->ntimestep >= network_next) {
+    network_next = update->ntimestep + lub::network_check_interval;
+    check_contact_network(ncandidate);
   }
 
   // Pass 2: the pairs kept by pass 1 (j kept with them: no second look-up in the neighbor

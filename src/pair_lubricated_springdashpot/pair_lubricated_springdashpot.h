@@ -81,7 +81,7 @@ class PairLubricatedSpringDashpot : public Pair {
   std::vector<int> record_i, record_j;
   std::vector<double> record_force;
   int nrecord = 0;
-  enum { COMM_LOAD, COMM_SCALE, COMM_MASS } comm_what = COMM_LOAD;
+  enum { COMM_LOAD, COMM_SCALE, COMM_MASS, COMM_NETWORK } comm_what = COMM_LOAD;
   void begin_film_budget();
   void reserve_records(int more);
   __attribute__((always_inline)) inline void record_film(int i, int j, double film, double share,
@@ -103,6 +103,17 @@ class PairLubricatedSpringDashpot : public Pair {
   bool inverse_mass_on = false;
   std::vector<double> inverse_mass;
   void update_inverse_mass();
+  // Stability of the network of sustained contacts (lubricated/contact_network.h), checked at the
+  // first step of a run and every network_check_interval steps, only where some type pair's
+  // contact load exceeds network_check_load: per type pair the normal load and the bounding one
+  // (with the tangential spring); per atom the network sums.
+  std::vector<double> network_load, network_bound;
+  bool network_check = false, network_warned = false;
+  bigint network_next = 0;    // step of the next check
+  std::vector<double> network_sums;
+  std::vector<int> network_i, network_j;
+  void set_network_loads(int itype, int jtype);
+  void check_contact_network(int ncandidate);
 
   void allocate();
   int ntypes_alloc = 0;

@@ -1,0 +1,250 @@
+// Stability of the network of sustained contacts (lubricated/contact_network.h). The step of the
+// linearised network, y' - 2 y + y'' = -(K y + C (y - y'')) in mass-weighted coordinates, is stable
+// when lambda_max(S) < 4, S = sum_k s_k b_k b_k^T; the per-atom bounds must bracket lambda_max,
+// be exact for an isolated pair, and predict the growth of the actual recurrence.
+#include "lubricated/contact_network.h"
+#include "lubricated/contact_step.h"
+#include "lubricated/tangential.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+using namespace lubricated;
+
+namespace {
+
+struct Contact {
+  int i, j;
+  double n[3];
+  double m_e;
+  double s;    // load (normal)
+};
+
+struct Network {
+  std::vector<double> mass;
+  std::vector<Contact> contacts;
+};
+
+// Spheres with radii 1:10 (log-uniform) at random in a box, in contact where they overlap.
+Network random_network(std::mt19937_64 &rng, int n, double box, double load_lo, double load_hi)
+{
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Network net;
+  std::vector<double> x(3 * n), r(n);
+  for (int i = 0; i < n; i++) {
+    r[i] = 0.1 * std::exp(std::log(10.0) * u(rng));
+    net.mass.push_back(r[i] * r[i] * r[i]);
+    for (int d = 0; d < 3; d++) x[3 * i + d] = box * u(rng);
+  }
+  for (int i = 0; i < n; i++)
+    for (int j = i + 1; j < n; j++) {
+      double del[3], rsq = 0.0;
+      for (int d = 0; d < 3; d++) del[d] = x[3 * i + d] - x[3 * j + d], rsq += del[d] * del[d];
+      if (rsq >= (r[i] + r[j]) * (r[i] + r[j])) continue;
+      Contact c{i, j, {}, net.mass[i] * net.mass[j] / (net.mass[i] + net.mass[j]),
+                load_lo + (load_hi - load_lo) * u(rng)};
+      for (int d = 0; d < 3; d++) c.n[d] = del[d] / std::sqrt(rsq);
+      net.contacts.push_back(c);
+    }
+  return net;
+}
+
+double project(const Network &net, const Contact &c, const std::vector<double> &y)
+{
+  double p = 0.0;
+  for (int d = 0; d < 3; d++)
+    p += c.n[d] * (y[3 * c.i + d] / std::sqrt(net.mass[c.i]) - y[3 * c.j + d] / std::sqrt(net.mass[c.j]));
+  return std::sqrt(c.m_e) * p;
+}
+
+// out += sum_k w_k b_k (b_k . y), w_k = weight * s_k (or weight if unit).
+void accumulate(const Network &net, const std::vector<double> &y, double weight, bool unit,
+                std::vector<double> &out)
+{
+  for (const Contact &c : net.contacts) {
+    const double a = weight * (unit ? 1.0 : c.s) * project(net, c, y) * std::sqrt(c.m_e);
+    for (int d = 0; d < 3; d++) {
+      out[3 * c.i + d] += a * c.n[d] / std::sqrt(net.mass[c.i]);
+      out[3 * c.j + d] -= a * c.n[d] / std::sqrt(net.mass[c.j]);
+    }
+  }
+}
+
+double largest_eigenvalue(const Network &net, std::mt19937_64 &rng, bool unit = false)
+{
+  std::normal_distribution<double> normal;
+  std::vector<double> y(3 * net.mass.size());
+  for (double &v : y) v = normal(rng);
+  double lambda = 0.0;
+  for (int it = 0; it < 1500; it++) {
+    double norm = 0.0;
+    for (double v : y) norm += v * v;
+    for (double &v : y) v /= std::sqrt(norm);
+    std::vector<double> z(y.size(), 0.0);
+    accumulate(net, y, 1.0, unit, z);
+    lambda = 0.0;
+    for (std::size_t k = 0; k < y.size(); k++) lambda += y[k] * z[k];    // Rayleigh quotient
+    y = z;
+  }
+  return lambda;
+}
+
+// The per-atom sums and the largest upper row and lower quotient over the contacts.
+void bounds(const Network &net, double &upper, double &lower)
+{
+  std::vector<double> sums(network_values * net.mass.size(), 0.0);
+  for (const Contact &c : net.contacts) {
+    add_network_contact(&sums[network_values * c.i], c.s, c.s, c.m_e, c.n);
+    add_network_contact(&sums[network_values * c.j], c.s, c.s, c.m_e, c.n);
+  }
+  upper = lower = 0.0;
+  for (const Contact &c : net.contacts) {
+    const double *si = &sums[network_values * c.i], *sj = &sums[network_values * c.j];
+    upper = std::max(upper, network_upper_row(c.s, c.m_e, si, net.mass[c.i], sj, net.mass[c.j]));
+    lower = std::max(lower, network_lower_quotient(c.s, c.m_e, c.n, si, net.mass[c.i], sj, net.mass[c.j]));
+  }
+}
+
+// Largest |y| over `steps` steps of the recurrence with per-step kappa and gamma on every contact,
+// from a random start with |y| = 1 (y'' = y).
+double largest_amplitude(const Network &net, double kappa, double gamma, int steps, std::mt19937_64 &rng)
+{
+  std::normal_distribution<double> normal;
+  const std::size_t size = 3 * net.mass.size();
+  std::vector<double> y(size), last(size), next(size), diff(size), force(size);
+  double norm = 0.0;
+  for (double &v : y) v = normal(rng), norm += v * v;
+  for (std::size_t q = 0; q < size; q++) last[q] = y[q] /= std::sqrt(norm);
+  double largest = 1.0;
+  for (int n = 0; n < steps && largest < 1e9; n++) {
+    for (std::size_t q = 0; q < size; q++) diff[q] = y[q] - last[q], force[q] = 0.0;
+    accumulate(net, y, kappa, true, force);
+    accumulate(net, diff, gamma, true, force);
+    norm = 0.0;
+    for (std::size_t q = 0; q < size; q++) {
+      next[q] = 2.0 * y[q] - last[q] - force[q];
+      norm += next[q] * next[q];
+    }
+    last.swap(y);
+    y.swap(next);
+    largest = std::max(largest, std::sqrt(norm));
+  }
+  return largest;
+}
+
+}    // namespace
+
+TEST(ContactNetwork, LoadIsThatOfTheStepConstants)
+{
+  const double dt = 1e-5;
+  for (double e : {1.0, 0.9, 0.5, 0.1, 0.01})
+    for (double n : {1.0, 1.5, 2.0, 3.0, 8.0, 100.0}) {
+      const ContactStep cs = make_contact_step(spring_dashpot_from_restitution(e, n * dt), dt);
+      EXPECT_NEAR(contact_load(cs.stiffness_step, cs.damping_step, dt), contact_load_of_steps(e, n), 1e-12)
+          << "e = " << e << ", N_c = " << n;
+      Coefficients c;
+      c.e_dry = 0.9, c.n_contact = n, c.friction = 0.3, c.e_tangential = e;
+      const TangentialModel tm = make_tangential_model(c, dt);
+      EXPECT_NEAR(contact_load(tm.stiffness_step, tm.damping_step, dt), contact_load_of_steps(e, n), 1e-12);
+    }
+}
+
+TEST(ContactNetwork, IsolatedPairIsNeverLimited)
+{
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 1000; trial++) {
+    const double e = trial == 0 ? 0.5 : u(rng), steps = 1.0 + 20.0 * u(rng) * u(rng);
+    const double s = contact_load_of_steps(e, steps);
+    EXPECT_LE(s, 3.25 + 1e-12);
+    Network net;
+    net.mass.push_back(std::exp(6.0 * u(rng)));
+    net.mass.push_back(std::exp(6.0 * u(rng)));
+    net.contacts.push_back({0, 1, {0.6, 0.0, 0.8}, net.mass[0] * net.mass[1] / (net.mass[0] + net.mass[1]), s});
+    double upper, lower;
+    bounds(net, upper, lower);
+    EXPECT_NEAR(upper, s, 1e-12 * s);
+    EXPECT_NEAR(lower, s, 1e-12 * s);
+    EXPECT_LT(upper, stable_network_load);
+  }
+}
+
+TEST(ContactNetwork, ThreeInARowIsExact)
+{
+  const Network net{std::vector<double>(3, 1.0),
+                    {Contact{0, 1, {1, 0, 0}, 0.5, 2.0}, Contact{1, 2, {1, 0, 0}, 0.5, 2.0}}};
+  double upper, lower;
+  bounds(net, upper, lower);
+  std::mt19937_64 rng(3);
+  EXPECT_NEAR(largest_eigenvalue(net, rng), 3.0, 1e-9);    // 2 x 1.5
+  EXPECT_NEAR(upper, 3.0, 1e-12);
+  EXPECT_NEAR(lower, 2.5, 1e-12);                           // 2 x 1.25
+}
+
+TEST(ContactNetwork, BoundsBracketTheLargestEigenvalue)
+{
+  std::mt19937_64 rng(11);
+  int dense = 0;
+  for (int trial = 0; trial < 20; trial++) {
+    const Network net = random_network(rng, 60, 1.0 + 0.05 * trial, 0.1, 3.0);
+    if (net.contacts.empty()) continue;
+    double upper, lower;
+    bounds(net, upper, lower);
+    const double lambda = largest_eigenvalue(net, rng);
+    EXPECT_LE(lower, lambda * (1.0 + 1e-6)) << "trial " << trial;
+    EXPECT_GE(upper, lambda) << "trial " << trial;
+    dense += net.contacts.size() > 60;
+  }
+  EXPECT_GE(dense, 5);    // several networks with more contacts than spheres
+}
+
+// The recurrence itself: stable where the upper bound is below 4, growing where the lower bound
+// is 4 or more (contacts of one model: N_c steps, e_d).
+TEST(ContactNetwork, BoundsPredictTheStep)
+{
+  std::mt19937_64 rng(5);
+  const Network unit = random_network(rng, 60, 1.0, 1.0, 1.0);
+  ASSERT_GT(unit.contacts.size(), 60u);
+  double upper, lower;
+  bounds(unit, upper, lower);
+  const double lambda = largest_eigenvalue(unit, rng);
+  int stable = 0, unstable = 0;
+  for (double e : {0.9, 0.5, 0.02})
+    for (double n = 1.0; n <= 40.0; n *= 1.5) {
+      const double s = contact_load_of_steps(e, n);
+      const double E = std::pow(e, 1.0 / std::max(n, 1.5)), C = std::cos(3.14159265358979323846 / std::max(n, 1.5));
+      const double amplitude = largest_amplitude(unit, 1.0 + E * E - 2.0 * E * C, 1.0 - E * E, 2000, rng);
+      if (upper * s < stable_network_load) {
+        EXPECT_LT(amplitude, 1e3) << "e_d = " << e << ", N_c = " << n;
+        stable++;
+      }
+      if (lower * s >= stable_network_load) {
+        EXPECT_GT(amplitude, 1e6) << "e_d = " << e << ", N_c = " << n;
+        unstable++;
+      }
+      // lambda_max itself decides, whichever bound applies.
+      if (lambda * s < 0.95 * stable_network_load) {
+        EXPECT_LT(amplitude, 1e3);
+      } else if (lambda * s > 1.05 * stable_network_load) {
+        EXPECT_GT(amplitude, 1e6);
+      }
+    }
+  EXPECT_GE(stable, 4) << "unstable: " << unstable;
+  EXPECT_GE(unstable, 4) << "stable: " << stable;
+}
+
+TEST(ContactNetwork, StepsForLoadInvertsTheLoad)
+{
+  for (double e : {0.9, 0.5, 0.1})
+    for (double target : {0.1, 0.4, 1.0, 2.5}) {
+      const double n = contact_steps_for_load(e, -1.0, target);
+      EXPECT_LE(contact_load_of_steps(e, n), target * (1.0 + 1e-9));
+      EXPECT_GT(contact_load_of_steps(e, 0.99 * n), target);
+      const double both = contact_steps_for_load(e, 0.3, target);
+      EXPECT_GE(both, n * (1.0 - 1e-3));
+      EXPECT_LE(contact_load_of_steps(0.3, both), target * (1.0 + 1e-9));
+    }
+}
