@@ -180,6 +180,19 @@ void FixWallLubrication::add_film_loads(double *load, int nlocal) const
   for (int i = 0; i < nlocal; i++) load[i] += film_load[i];
 }
 
+// Every atom of the group counts as near each wet wall: the bound of a wall contact is small
+// (m_e = m) and the test runs once per neighbor list build.
+void FixWallLubrication::add_film_share_bounds(double *bound, int nlocal) const
+{
+  if (!model.lubrication.active()) return;
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  const int *mask = atom->mask;
+  const int sides = (has_lo ? 1 : 0) + (has_hi ? 1 : 0);
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit)
+      bound[i] += sides * lub::film_share_bound(model.lubrication, radius[i], rmass[i], update->dt);
+}
+
 // The deferred wall films, scaled by the atoms' film budget: the pair style's where it keeps
 // one (its loads include these walls), this fix's own without a lubricated pair style, none
 // under `limit pair`.

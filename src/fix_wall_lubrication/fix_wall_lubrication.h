@@ -50,6 +50,8 @@ class FixWallLubrication : public Fix {
   // Adds this step's wall-film shares to the owned atoms' loads of the many-body film budget
   // (lubricated/film_budget.h; pair_style lubricated/springdashpot sums them with its own).
   void add_film_loads(double *load, int nlocal) const;
+  // Adds to each owned atom the bound on its wet walls' film shares (film_budget.h).
+  void add_film_share_bounds(double *bound, int nlocal) const;
 
  protected:
   lubricated::Coefficients coeffs;

@@ -333,7 +333,10 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (inverse_mass_on && (neighbor->ago == 0 || update->setupflag)) update_inverse_mass();
-  if (film_budget) begin_film_budget();
+  if (!film_budget) film_budget_now = false;
+  else if (neighbor->ago == 0 || update->setupflag || update->dt != film_bound_dt)
+    film_budget_now = films_can_exceed_budget();
+  if (film_budget_now) begin_film_budget();
   // A scene pays only for what it uses: one loop per combination.
   if (any_tangential) {
     if (any_wet) eval<true, true>();
@@ -344,8 +347,58 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
     if (any_wet) vectorised ? eval<true, false, true>() : eval<true, false>();
     else vectorised ? eval<false, false, true>() : eval<false, false>();
   }
-  if (film_budget) finish_film_budget();
+  if (film_budget_now) finish_film_budget();
   if (vflag_fdotr) virial_fdotr_compute();
+}
+
+// Until the next neighbor list build a pair closes by at most the skin, so only the pairs of the
+// list whose gap is below the film's reach plus the skin can have a film. Each atom's sum of
+// those contacts' share bounds (and its wet walls') bounds its load: where no sum exceeds 1
+// the budget would scale nothing and is skipped until the next build (or a new time step).
+// The bounds use the spheres' own masses, which no contact mass exceeds (contact_mass.h).
+bool PairLubricatedSpringDashpot::films_can_exceed_budget()
+{
+  double **x = atom->x;
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost, newton_pair = force->newton_pair;
+  const double dt = update->dt, skin = neighbor->skin;
+  film_bound_dt = dt;
+  if (static_cast<int>(load_of_atom.size()) < nall) {
+    load_of_atom.resize(atom->nmax);
+    scale_of_atom.resize(atom->nmax);
+  }
+  double *bound = load_of_atom.data();
+  std::fill(bound, bound + nall, 0.0);
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const lub::Lubrication &film = models[index(type[i], type[j])].lubrication;
+      if (!film.active()) continue;
+      const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+      const lub::FilmRadius radius_ij = lub::film_radius_pair(radius[i], radius[j]);
+      const double reach = radius[i] + radius[j] + film.reach(radius_ij.value) + skin;
+      if (delx * delx + dely * dely + delz * delz >= reach * reach) continue;
+      const double b =
+          lub::film_share_bound(film, radius_ij.value, lub::reduced_mass(rmass[i], rmass[j]), dt);
+      bound[i] += b;
+      if (newton_pair || j < nlocal) bound[j] += b;
+    }
+  }
+  for (auto wall : walls) wall->add_film_share_bounds(bound, nlocal);
+  if (newton_pair) {
+    comm_what = COMM_LOAD;
+    comm->reverse_comm(this);
+  }
+  // A margin for the rounding of the film's integral (film_budget.h, ~1e-12 relative).
+  constexpr double below_one = 1.0 - 1e-6;
+  int over = 0;
+  for (int i = 0; i < nlocal; i++) over |= bound[i] > below_one;
+  int any_over = 0;
+  MPI_Allreduce(&over, &any_over, 1, MPI_INT, MPI_MAX, world);
+  return any_over != 0;
 }
 
 // Owned atoms' inverse contact masses, then the ghosts' (a rigid body's mass is known to the
@@ -675,7 +728,7 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
   constexpr int chunk = 256;
   double fpair[chunk], energy[chunk], film[chunk], capacity[chunk];
   int done[chunk], rest[chunk];
-  const bool budget = film_budget;
+  const bool budget = film_budget_now;
   auto apply = [&](int i, int j, double fij, double eij) {
     const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
     f[i][0] += delx * fij;
@@ -847,7 +900,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   // Pass 2: the pairs kept by pass 1 (j kept with them: no second look-up in the neighbor
   // list; jj for the history only).
   double **torque = atom->torque;
-  const bool budget = WET && film_budget;
+  const bool budget = WET && film_budget_now;
   if (budget) reserve_records(ncandidate + nfilm);
   const double kick_time = lub::film_kick_time(dt, when != lub::Evaluation::step,
                                                when == lub::Evaluation::midpoint_start);

@@ -45,7 +45,7 @@ class PairLubricatedSpringDashpot : public Pair {
   // The many-body film budget (lubricated/film_budget.h) of this step, for fix wall/lubrication:
   // whether the pair style keeps it (the walls' loads included), and an owned atom's film scale.
   bool keeps_film_budget() const { return film_budget; }
-  double film_scale(int i) const { return scale_of_atom[i]; }
+  double film_scale(int i) const { return film_budget_now ? scale_of_atom[i] : 1.0; }
 
  protected:
   std::vector<lubricated::Coefficients> coeffs;    // per type pair, (ntypes+1)^2
@@ -82,6 +82,11 @@ class PairLubricatedSpringDashpot : public Pair {
   std::vector<double> record_force;
   int nrecord = 0;
   enum { COMM_LOAD, COMM_SCALE, COMM_MASS, COMM_NETWORK } comm_what = COMM_LOAD;
+  // Whether this step's films can exceed any atom's budget (from the bounds of the contacts
+  // the neighbor list allows until its next build; film_budget.h): if not, the budget is skipped.
+  bool film_budget_now = false;
+  double film_bound_dt = 0.0;
+  bool films_can_exceed_budget();
   void begin_film_budget();
   void reserve_records(int more);
   __attribute__((always_inline)) inline void record_film(int i, int j, double film, double share,
