@@ -188,9 +188,11 @@ void FixWallLubrication::add_film_share_bounds(double *bound, int nlocal) const
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int sides = (has_lo ? 1 : 0) + (has_hi ? 1 : 0);
+  const bool shear_film = tmodel.film_active();    // no bound on its share yet: 1
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
-      bound[i] += sides * lub::film_share_bound(model.lubrication, radius[i], rmass[i], update->dt);
+      bound[i] += sides *
+          (shear_film ? 1.0 : lub::film_share_bound(model.lubrication, radius[i], rmass[i], update->dt));
 }
 
 // The deferred wall films, scaled by the atoms' film budget: the pair style's where it keeps
@@ -204,12 +206,22 @@ void FixWallLubrication::apply_films()
   const int nlocal = atom->nlocal;
   const bool by_pair = pair && pair->keeps_film_budget();
   const bool own = !pair;
+  const double *shear = shear_pending ? shear_film.data() : nullptr;
+  double **torque = atom->torque;
   for (int i = 0; i < nlocal; i++) {
-    if (film_force[i] == 0.0) continue;
+    const double *fs = shear ? shear + 6 * i : nullptr;
+    if (film_force[i] == 0.0 && !(fs && (fs[0] != 0.0 || fs[1] != 0.0 || fs[2] != 0.0))) continue;
     const double scale = by_pair ? pair->film_scale(i) : own ? lub::film_scale_of_load(film_load[i]) : 1.0;
     const double force = scale * film_force[i];
     f[i][axis] += force;
     local_sums[1 + axis] += force;
+    if (fs) {
+      for (int d = 0; d < 3; d++) {
+        f[i][d] += scale * fs[d];
+        torque[i][d] += scale * fs[3 + d];
+        local_sums[1 + d] += scale * fs[d];
+      }
+    }
   }
 }
 
@@ -228,10 +240,12 @@ void FixWallLubrication::compute_walls(bool defer_films)
   for (double &s : local_sums) s = 0.0;
   sums_reduced = false;
   films_pending = defer_films = defer_films && model.lubrication.active();
+  shear_pending = defer_films && tmodel.film_active();
   if (defer_films) {
     film_force.assign(nlocal, 0.0);
     film_load.assign(nlocal, 0.0);
   }
+  if (shear_pending) shear_film.assign(6 * static_cast<std::size_t>(nlocal), 0.0);
   const double kick_time = lub::film_kick_time(update->dt, when != lub::Evaluation::step,
                                                when == lub::Evaluation::midpoint_start);
   // Both walls on atom i of contact mass `mass`.
@@ -251,17 +265,27 @@ void FixWallLubrication::compute_walls(bool defer_films)
       }
       const lub::NormalForce fn = lub::normal_force(model, gap, r, mass, u_n, when);
       double force = side * fn.total();
+      double share = 0.0;
       if (defer_films) {    // applied in post_force, within the atom's film budget
         force = side * fn.contact;
         film_force[i] += side * fn.lubrication;
-        film_load[i] += lub::film_share(fn.lubrication, mass, u_n, kick_time);
+        share = lub::film_share(fn.lubrication, mass, u_n, kick_time);
+        if (!shear_pending) film_load[i] += share;
       }
       f[i][axis] += force;
       local_sums[0] += fn.energy;
       local_sums[1 + axis] += force;
       if (tangential_on) {
         double ft[3] = {0.0, 0.0, 0.0}, torque[3] = {0.0, 0.0, 0.0};
-        tangential(i, side, gap, u_n, fn.contact, mass, ft, torque);
+        // The shear film deferred with the normal one: its force and torque (shear, 6) and
+        // share (shear[6]); the contact's share the larger of the two (film_budget.h).
+        double shear[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        tangential(i, side, gap, u_n, fn.contact, mass, ft, torque, kick_time,
+                   shear_pending ? shear : nullptr);
+        if (shear_pending) {
+          film_load[i] += lub::contact_film_share(share, shear[6]);
+          for (int d = 0; d < 6; d++) shear_film[6 * i + d] += shear[d];
+        }
         for (int d = 0; d < 3; d++) {
           f[i][d] += ft[d];
           atom->torque[i][d] += torque[d];
@@ -287,9 +311,12 @@ void FixWallLubrication::compute_walls(bool defer_films)
 }
 
 // Tangential force and torque on i from the wall on this side (tangential.h, m_e = mass; the
-// rolling resistance with the sphere's own inertia).
+// rolling resistance with the sphere's own inertia). shear (7 doubles, or nullptr): the shear
+// film is left out of force and torque and returned there instead (force, torque, and its share
+// of the film budget for this kick time, film_budget.h).
 void FixWallLubrication::tangential(int i, int side, double gap, double u_n, double normal_force,
-                                    double mass, double *force, double *torque)
+                                    double mass, double *force, double *torque, double kick_time,
+                                    double *shear)
 {
   const double r = atom->radius[i], m = atom->rmass[i];
   const double *v = atom->v[i], *w = atom->omega[i];
@@ -312,10 +339,19 @@ void FixWallLubrication::tangential(int i, int side, double gap, double u_n, dou
       h[0] = h[1] = h[2] = h[3] = 0.0;
     }
   }
-  if (tmodel.film_active())
-    f = lub::plus(f, lub::shear_film_force(tmodel, s, gap / r, model.lubrication.activation_for(r),
-                                           model.lubrication.eps_saturation,
-                                           model.lubrication.eps_release, r, m_t));
+  if (tmodel.film_active()) {
+    const lub::Vec3 fs = lub::shear_film_force(tmodel, s, gap / r, model.lubrication.activation_for(r),
+                                               model.lubrication.eps_saturation,
+                                               model.lubrication.eps_release, r, m_t);
+    if (shear) {
+      const lub::Vec3 nxfs = lub::cross(n, fs);
+      shear[0] = fs.x, shear[1] = fs.y, shear[2] = fs.z;
+      shear[3] = -r * nxfs.x, shear[4] = -r * nxfs.y, shear[5] = -r * nxfs.z;
+      shear[6] = lub::shear_film_share(lub::dot(fs, fs), lub::dot(s, s), m_t, kick_time);
+    } else {
+      f = lub::plus(f, fs);
+    }
+  }
   lub::Vec3 roll;
   if (tmodel.rolling_active() && gap < 0.0)
     roll = lub::rolling_torque(tmodel, n, omega, r, 0.4 * m * r * r, normal_force);

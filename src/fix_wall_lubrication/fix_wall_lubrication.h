@@ -62,7 +62,7 @@ class FixWallLubrication : public Fix {
   double **history = nullptr;
   bool keeps_history() const { return coeffs.friction > 0.0; }
   void tangential(int i, int side, double gap, double u_n, double normal_force, double mass,
-                  double *force, double *torque);
+                  double *force, double *torque, double kick_time = 0.0, double *shear = nullptr);
   int axis = -1;                  // 0, 1, 2 for xplane, yplane, zplane
   bool has_lo = false, has_hi = false;
   double lo = 0.0, hi = 0.0;      // wall positions (box units)
@@ -75,6 +75,10 @@ class FixWallLubrication : public Fix {
   // the axis and their summed share (valid while films_pending).
   class PairLubricatedSpringDashpot *pair = nullptr;
   std::vector<double> film_force, film_load;
+  // With the shear film: per owned atom, its force x y z and torque x y z (both walls), deferred
+  // and scaled with the normal films (one contact's share: the larger of the two films').
+  std::vector<double> shear_film;
+  bool shear_pending = false;
   bool films_pending = false;
   // Immovable atoms (skipped: the wall cannot move them) and rigid bodies (m_e = M_body).
   ContactMass contact_mass;

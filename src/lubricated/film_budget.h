@@ -24,6 +24,37 @@
 // unequal pairs at their cap; isolated collisions keep their exact results here). Where every
 // D <= 1 (dilute beds, films the step resolves) nothing changes; where D > 1 the film does what
 // one explicit step can: at most stop the stiffest mode.
+//
+// The shear film (tangential lubrication, tangential.h) shares the budget. It is a damper on
+// the slip s_k = P_t (v_i - v_j) - (R_i w_i + R_j w_j) x n_k (P_t: projection on the tangent
+// plane), F = -c_t s on i, -F on j, torques -R_i n x F and -R_j n x F. Take the state with
+// rotation, y = (M^1/2 v, I^1/2 w) per atom, whose |y|^2 / 2 is the kinetic energy including the
+// rotational one. For a tangent direction t_d (d = 1, 2) of contact k, t_d . s_k = u_kd . y with
+//   u_kd = (t_d / sqrt(m_i), -t_d / sqrt(m_j); -R_i (n x t_d) / sqrt(I_i), -R_j (n x t_d) / sqrt(I_j))
+// (translation of i, j; rotation of i, j), and the film's update of one step is y' = (I - A) y
+// with A_k^t = c_t t_kick (u_k1 u_k1^T + u_k2 u_k2^T), the generalised force of F being exactly
+// -c_t sum_d u_kd (u_kd . y) (the torques above are the rotational rows). Its coefficients
+// square-sum to |u_kd|^2 = 1/m_i + 1/m_j + R_i^2/I_i + R_j^2/I_j = 7 / (2 m_e) = 1 / m_t for
+// solid spheres (I = 2/5 m R^2): m_t = 2/7 m_e is the tangential mass of tangential.h (an
+// immovable atom has inverse mass and inverse inertia 0 and m_t follows from the other's; a
+// wall: 1/m_t = 1/m_i + R_i^2/I_i, m_e = m_i). So A_k^t = a_t (û_k1 û_k1^T + û_k2 û_k2^T) with
+// unit û and the shear share a_t = c_t t_kick / m_t = |F| t_kick / (m_t |s|), the fraction of
+// the shear film's own cap (tangential.h integrates it exactly: a_t < 1 over a step).
+// One contact's films act on orthogonal directions of y: the normal film's ŵ_k has only
+// translational rows along n, û_kd translational rows along t_d (n . t_d = 0) and rotational
+// rows along n x t_d ((n x t_1) . (n x t_2) = t_1 . t_2 = 0). So for one contact
+//   y^T (A_k^n + A_k^t) y = a_n (ŵ . y)^2 + a_t sum_d (û_kd . y)^2 <= max(a_n, a_t) |P_k y|^2
+//                          <= max(a_n, a_t) (|y_i|^2 + |y_j|^2)
+// (P_k: the orthogonal projection on span(ŵ, û_k1, û_k2), which lies in the rows of i and j;
+// the bound is attained on ŵ or û, so max, not the sum, is the contact's norm). Across contacts
+// the bounds add: y^T A y <= sum_i |y_i|^2 D_i with
+//   D_i = sum over its contacts k of max(a_n,k, a_t,k)
+// and scaling both films of contact k by s_k = 1 / max(1, D_i, D_j) gives 0 <= A <= I again,
+// now for the kinetic energy including rotation (|y_i|^2 counts both). The sum over contacts is
+// needed (several contacts of one atom can align on one mode); within a contact the max is
+// enough, so an isolated pair or wall contact still has D = max(a_n, a_t) <= 1 and keeps its
+// exact result, however much of both caps it uses. (Where a rigid body's inertia exceeds its
+// spheres' 2/5 m R^2, |u_kd|^2 < 1 / m_t and the share computed with m_t is conservative.)
 #pragma once
 
 #include "lubricated/lubrication.h"
@@ -78,6 +109,21 @@ inline double film_share_bound(const Lubrication &film, double film_radius, doub
   if (film.grid_spacing > 0.0) return 1.0;
   const double slope = film.lambda_saturated - film.lambda_activation;
   return std::min(1.0, film.six_pi_mu * film_radius * slope * dt / reduced_mass);
+}
+
+// The shear film's share a_t = |F| t_kick / (m_t |s|) from the squared lengths of its force and
+// the slip (F = -c_t s: parallel), m_t the tangential mass (tangential_mass_ratio m_e).
+inline double shear_film_share(double force_sq, double slip_sq, double tangential_mass,
+                               double kick_time)
+{
+  return std::sqrt(force_sq / std::max(slip_sq, DBL_MIN)) * kick_time / tangential_mass;
+}
+
+// One contact's share of its atoms' loads: the larger of its normal and shear films' shares
+// (orthogonal directions of the contact's relative motion; see above).
+inline double contact_film_share(double normal_share, double shear_share)
+{
+  return std::max(normal_share, shear_share);
 }
 
 // Scale of one atom's films from its load D_i; a pair takes the smaller of its two atoms'

@@ -154,7 +154,7 @@ void PairLubricatedSpringDashpot::init_style()
   any_wet = any_tangential = false;
   network_check = network_warned = false;    // set by init_one (set_network_loads)
   network_next = 0;                          // the first step of the run
-  bool any_friction = false;
+  bool any_friction = false, any_shear_film = false;
   std::set<std::string> advice;
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++) {
@@ -167,6 +167,7 @@ void PairLubricatedSpringDashpot::init_style()
       any_wet = any_wet || c.wet();
       any_tangential = any_tangential || c.tangential();
       any_friction = any_friction || c.friction > 0.0;
+      any_shear_film = any_shear_film || (c.wet() && c.shear_film());
     }
   if (any_tangential && !(atom->omega_flag && atom->torque_flag))
     error->all(FLERR, "{} with friction, rolling or shearfilm requires per-atom omega and torque "
@@ -220,6 +221,7 @@ void PairLubricatedSpringDashpot::init_style()
     wet_walls = wet_walls || wall->wet();
   }
   film_budget = limit_per_atom && (any_wet || wet_walls);
+  shear_records = film_budget && any_shear_film;    // the shear films share the budget
   if (!film_budget) scale_of_atom.clear();
   if ((any_wet || wet_walls) && comm->me == 0)
     utils::logmesg(lmp, "{}: {}\n", STYLE, film_budget ? "films within each sphere's many-body budget (limit atom)"
@@ -368,6 +370,9 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
     load_of_atom.resize(atom->nmax);
     scale_of_atom.resize(atom->nmax);
   }
+  // The shear film's share has no such bound yet: with it the budget always runs.
+  for (const auto &tm : tmodels)
+    if (tm.film_active()) return true;
   double *bound = load_of_atom.data();
   std::fill(bound, bound + nall, 0.0);
   for (int ii = 0; ii < list->inum; ii++) {
@@ -426,11 +431,14 @@ void PairLubricatedSpringDashpot::begin_film_budget()
 
 void PairLubricatedSpringDashpot::reserve_records(int more)
 {
-  if (nrecord + more <= static_cast<int>(record_i.size())) return;
+  if (nrecord + more <= static_cast<int>(record_i.size()) &&
+      (!shear_records || record_shear.size() >= 3 * record_i.size()))
+    return;
   const int size = 2 * (nrecord + more);
   record_i.resize(size);
   record_j.resize(size);
   record_force.resize(size);
+  if (shear_records) record_shear.resize(3 * size);
 }
 
 // Loads summed on the owners, scales sent to the ghosts, then every film whose atoms are over
@@ -459,6 +467,10 @@ void PairLubricatedSpringDashpot::finish_film_budget()
   comm_what = COMM_SCALE;
   comm->forward_comm(this);
   double **x = atom->x, **f = atom->f;
+  if (shear_records) {
+    finish_shear_film_budget();
+    return;
+  }
   for (int r = 0; r < nrecord; r++) {
     const int i = record_i[r], j = record_j[r];
     const double s = std::min(scale[i], scale[j]);
@@ -474,6 +486,44 @@ void PairLubricatedSpringDashpot::finish_film_budget()
       f[j][2] -= delz * fpair;
     }
     if (evflag) ev_tally(i, j, nlocal, newton_pair, 0.0, 0.0, fpair, delx, dely, delz);
+  }
+}
+
+// The correction pass with shear films: per record, (s - 1) times the normal film along n and the
+// shear film at the contact points, with its torques -R_i n x f and -R_j n x f (tangential.h).
+void PairLubricatedSpringDashpot::finish_shear_film_budget()
+{
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const double *scale = scale_of_atom.data(), *radius = atom->radius;
+  double **x = atom->x, **f = atom->f, **torque = atom->torque;
+  for (int r = 0; r < nrecord; r++) {
+    const int i = record_i[r], j = record_j[r];
+    const double s = std::min(scale[i], scale[j]);
+    if (s == 1.0) continue;
+    const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+    const double rinv = 1.0 / std::sqrt(delx * delx + dely * dely + delz * delz);
+    const double fpair = (s - 1.0) * record_force[r] * rinv;
+    const double *shear = &record_shear[3 * r];
+    const lub::Vec3 df{(s - 1.0) * shear[0], (s - 1.0) * shear[1], (s - 1.0) * shear[2]};
+    const lub::Vec3 nxf = lub::cross(lub::Vec3{delx * rinv, dely * rinv, delz * rinv}, df);
+    const double fx = delx * fpair + df.x, fy = dely * fpair + df.y, fz = delz * fpair + df.z;
+    const double radi = radius[i], radj = radius[j];
+    f[i][0] += fx;
+    f[i][1] += fy;
+    f[i][2] += fz;
+    torque[i][0] -= radi * nxf.x;
+    torque[i][1] -= radi * nxf.y;
+    torque[i][2] -= radi * nxf.z;
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= fx;
+      f[j][1] -= fy;
+      f[j][2] -= fz;
+      torque[j][0] -= radj * nxf.x;
+      torque[j][1] -= radj * nxf.y;
+      torque[j][2] -= radj * nxf.z;
+    }
+    if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
   }
 }
 
@@ -652,7 +702,7 @@ inline void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const 
                                                     const double *dv_ij, double rinv, double gap,
                                                     double u_n, double lub_radius, double m_e,
                                                     double normal_force, double *ft, double *ti,
-                                                    double *tj)
+                                                    double *tj, double kick_time, double *shear)
 {
   const lub::TangentialModel &tm = tmodels[index(atom->type[i], atom->type[j])];
   const double radi = atom->radius[i], radj = atom->radius[j];
@@ -684,9 +734,14 @@ inline void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const 
   if (tm.film_active()) {
     const lub::Lubrication &film = models[index(atom->type[i], atom->type[j])].lubrication;
     const double eps = gap / lub_radius;
-    f = lub::plus(f, lub::shear_film_force(tm, s, eps, film.activation_for(lub_radius),
-                                           film.eps_saturation, film.eps_release,
-                                           radi * radj / (radi + radj), m_t));
+    const lub::Vec3 fs = lub::shear_film_force(tm, s, eps, film.activation_for(lub_radius),
+                                               film.eps_saturation, film.eps_release,
+                                               radi * radj / (radi + radj), m_t);
+    f = lub::plus(f, fs);
+    if (shear) {
+      shear[0] = fs.x, shear[1] = fs.y, shear[2] = fs.z;
+      shear[3] = lub::shear_film_share(lub::dot(fs, fs), lub::dot(s, s), m_t, kick_time);
+    }
   }
   lub::Vec3 roll;
   if (tm.rolling_active() && gap < 0.0) {
@@ -962,9 +1017,8 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
 
     const double fpair = fn.total() * rinv;
     double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
-    if (budget)
-      record_film(i, j, fn.lubrication, lub::film_share(fn.lubrication, m_e, u_n, kick_time), nlocal,
-                  newton_pair);
+    const double share = budget ? lub::film_share(fn.lubrication, m_e, u_n, kick_time) : 0.0;
+    if (budget && !(TANGENTIAL && shear_records)) record_film(i, j, fn.lubrication, share, nlocal, newton_pair);
     if (TANGENTIAL) {
       double ft[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0}, tj[3] = {0.0, 0.0, 0.0};
       // The slip uses the engine's velocities (under the midpoint integrator: V~, not the
@@ -973,7 +1027,12 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
       double dv[3] = {dvx, dvy, dvz};
       if (vi != v[i])
         for (int d = 0; d < 3; d++) dv[d] = v[i][d] - v[j][d];
-      tangential(i, j, jj, del, dv, rinv, r - radsum, u_n, film.value, m_e, fn.contact, ft, ti, tj);
+      double shear[4] = {0.0, 0.0, 0.0, 0.0};    // the shear film's force on i and share
+      const bool shear_budget = budget && shear_records;
+      tangential(i, j, jj, del, dv, rinv, r - radsum, u_n, film.value, m_e, fn.contact, ft, ti, tj,
+                 kick_time, shear_budget ? shear : nullptr);
+      if (shear_budget)
+        record_films(i, j, fn.lubrication, shear, lub::contact_film_share(share, shear[3]), nlocal, newton_pair);
       fx += ft[0], fy += ft[1], fz += ft[2];
       for (int d = 0; d < 3; d++) torque[i][d] += ti[d];
       if (newton_pair || j < nlocal)
@@ -1073,6 +1132,7 @@ double PairLubricatedSpringDashpot::memory_usage()
        film_i.capacity() + film_j.capacity() + group_count.capacity() + group_keys.capacity() +
        record_i.capacity() + record_j.capacity()) *
           sizeof(int) +
-      (step_reach.capacity() + inverse_mass.capacity() + load_of_atom.capacity() + scale_of_atom.capacity() + record_force.capacity()) *
+      (step_reach.capacity() + inverse_mass.capacity() + load_of_atom.capacity() + scale_of_atom.capacity() +
+       record_force.capacity() + record_shear.capacity()) *
           sizeof(double);
 }

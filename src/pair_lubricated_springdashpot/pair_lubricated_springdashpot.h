@@ -99,7 +99,25 @@ class PairLubricatedSpringDashpot : public Pair {
     record_force[nrecord] = film;
     nrecord += film != 0.0;
   }
+  // With a shear film on some type pair (shear_records), the tangential loop records each
+  // pair's shear film force too (3 per record, on i) and its contact's share, the larger of the
+  // normal and shear films' (film_budget.h); both films are scaled by the same s.
+  bool shear_records = false;
+  std::vector<double> record_shear;
+  __attribute__((always_inline)) inline void record_films(int i, int j, double film, const double *shear,
+                                                          double share, int nlocal, int newton_pair)
+  {
+    load_of_atom[i] += share;
+    if (newton_pair || j < nlocal) load_of_atom[j] += share;
+    record_i[nrecord] = i;
+    record_j[nrecord] = j;
+    record_force[nrecord] = film;
+    double *out = &record_shear[3 * nrecord];
+    out[0] = shear[0], out[1] = shear[1], out[2] = shear[2];
+    nrecord += (film != 0.0) | (shear[0] != 0.0) | (shear[1] != 0.0) | (shear[2] != 0.0);
+  }
   void finish_film_budget();
+  void finish_shear_film_budget();
 
   // Immovable atoms and rigid bodies (contact_mass.h): where a run has any, the inverse mass
   // a contact moves, per owned and ghost atom (0 immovable), rebuilt with the neighbor lists;
@@ -126,12 +144,15 @@ class PairLubricatedSpringDashpot : public Pair {
   void update_models();
   template <bool WET, bool TANGENTIAL, bool SPLIT = false> void eval();
   template <class Evaluate> void vector_forces(int ncandidate, int nfilm, Evaluate &evaluate);
-  // One contact's tangential force and torques (inlined into eval's loop).
+  // One contact's tangential force and torques (inlined into eval's loop). shear (4 doubles, or
+  // nullptr): the shear film's force on i, included in ft and the torques, and its share of the
+  // film budget for this kick time (film_budget.h); left alone where no shear film acts.
   __attribute__((always_inline)) inline void tangential(int i, int j, int jj, const double *del,
                                                         const double *dv, double rinv, double gap,
                                                         double u_n, double lub_radius, double m_e,
                                                         double normal_force, double *ft,
-                                                        double *ti, double *tj);
+                                                        double *ti, double *tj, double kick_time,
+                                                        double *shear);
 };
 
 }    // namespace LAMMPS_NS
