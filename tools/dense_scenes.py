@@ -82,7 +82,7 @@ create_atoms 1 region ball
 set group all diameter {2 * R!r} density {RHO}
 group centre id 7
 velocity all set 0 0 0
-velocity centre set {SPEED} {0.6 * SPEED} {0.3 * SPEED}
+velocity centre set {SPEED} {0.6 * SPEED} {0.3 * SPEED} units box
 """ + TAIL.format(limit=limit, mu=mu, extra=extra, skin=0.2 * R, dt=dt, every=every, steps=steps)
 
 

@@ -102,3 +102,37 @@ variable n equal f_count*{steps + 1}
 print "RESULT e ${{e}}"
 print "RESULT contact_steps ${{n}}"
 """
+
+
+def frozen_pair(e_dry, mu=0.0, dt_ru=0.005, gap0=0.2137, steps=300, frozen=True):
+    """Atom 1 moving at U along x towards atom 2, held by fix freeze (frozen=True) or free; the
+    contact at x = 0 (the boundary between 2 ranks). RESULT e: separation / approach speed
+    (test_frozen_partners.frozen_pair of the LAMMPS tests, in LIGGGHTS syntax)."""
+    half = 0.01
+    hold = "fix hold base freeze" if frozen else ""
+    return HEADER + f"""boundary p p p
+region box block -{half} {half} -{half} {half} -{half} {half} units box
+create_box 1 box
+neighbor {0.5 * R} bin
+neigh_modify delay 0
+{properties(e_dry, mu, 8, e_wall=e_dry).replace("peratomtypepair 2", "peratomtypepair 1").replace(
+        f" {e_dry} {e_dry} {e_dry}", "")}
+pair_style gran model lubricated
+pair_coeff * *
+create_atoms 1 single {-R - 0.5 * gap0 * R} 0 0 units box
+create_atoms 1 single {R + 0.5 * gap0 * R} 0 0 units box
+set group all diameter {2 * R} density {RHO}
+group mover id 1
+group base id 2
+velocity all set 0 0 0 units box
+velocity mover set {U} 0 0 units box
+fix nve all nve/sphere
+{hold}
+timestep {dt_ru * R / U}
+thermo {steps}
+run {steps}
+variable e equal (vx[2]-vx[1])/{U}
+variable v2 equal vx[2]
+print "RESULT e ${{e}}"
+print "RESULT v2 ${{v2}}"
+"""

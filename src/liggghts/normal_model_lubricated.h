@@ -6,11 +6,14 @@
 // Mapping onto LIGGGHTS's contact interface (conventions of src/lubricated/normal_model.h):
 //   en      unit normal from the partner (particle j, or the wall) to particle i;
 //   gap     -deltan (LIGGGHTS's deltan is the overlap), u_n = vn (> 0 separating);
-//   m_e     sidata.meff (reduced mass; the particle mass for a wall);
+//   m_e     sidata.meff (reduced mass; the particle mass for a wall), LIGGGHTS's own: a rigid
+//           body's mass, a partner in fix freeze's group immovable; the same near contact;
 //   R       lubrication radius: 2 r_i r_j / (r_i + r_j) for a pair, r_i for a wall.
 // The film acts before contact, where LIGGGHTS calls surfacesClose() without a normal: the
 // model derives it from delta, sets has_force_update, and registers a contact distance
 // factor that covers the film (and one step of approach, which the step-exact contact needs).
+// Every film also enters the many-body film budget (fix_lubricated_film_budget.h), which the
+// pair's model creates; walls join it when a pair model lubricated exists.
 #pragma once
 
 #ifdef NORMAL_MODEL
@@ -24,9 +27,12 @@ NORMAL_MODEL(LUBRICATED, lubricated, 42)
 #include "fix_property_global.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "pair_gran.h"
 #include "update.h"
 
+#include "liggghts/fix_lubricated_film_budget.h"
 #include "liggghts/lubricated_properties.h"
+#include "lubricated/film_budget.h"
 #include "lubricated/normal_model.h"
 
 #include <algorithm>
@@ -43,13 +49,17 @@ static const int LUBRICATED = 42;
 template <> class NormalModel<LUBRICATED> : public NormalModelBase {
  public:
   NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, ContactModelBase *cmb) :
-      NormalModelBase(lmp, hsetup, cmb), is_wall_(cmb->is_wall())
+      NormalModelBase(lmp, hsetup, cmb), is_wall_(cmb->is_wall()),
+      pair_(is_wall_ ? nullptr : static_cast<LAMMPS_NS::PairGran *>(hsetup))
   {
   }
 
   void registerSettings(Settings &) {}
   void postSettings(IContactHistorySetup *, ContactModelBase *) {}
-  void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+  void beginPass(SurfacesIntersectData &, ForceData &, ForceData &)
+  {
+    if (budget_on_) budget_->begin();
+  }
   void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
   double stressStrainExponent() { return 1.0; }
 
@@ -79,6 +89,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
                         "before the run (insert them first, or give lubricatedActivation)");
     neighbor->register_contact_dist_factor(1.0 + reach + lubricated::liggghts::approach_margin);
     warned_ = false;
+    join_film_budget(caller);
   }
 
   inline void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces,
@@ -106,6 +117,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     sidata.gammat = 2.0 / 7.0 * sidata.gamman;
 
     apply(fn.total() * (is_wall_ ? sidata.area_ratio : 1.0), sidata.en, i_forces, j_forces);
+    if (fn.lubrication != 0.0 && budget_on_ && budget_->active())
+      record_film(sidata, fn.lubrication * (is_wall_ ? sidata.area_ratio : 1.0), sidata.en, m_e, u_n);
   }
 
   // Near contact: the film, and the step-exact contact's first and last steps.
@@ -123,16 +136,64 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     const double radius = is_wall_ ? scdata.radi
                                    : lubricated::lubrication_radius_pair(scdata.radi, scdata.radj);
     if (!model.acts(gap, radius, u_n)) return;
-    const double m_i = atom->rmass[scdata.i];
-    const double m_e = is_wall_ ? m_i : lubricated::reduced_mass(m_i, atom->rmass[scdata.j]);
+    const double m_e = reduced_mass(scdata);
     const lubricated::NormalForce fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation());
     if (fn.total() == 0.0) return;
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
     apply(fn.total() * (is_wall_ ? scdata.area_ratio : 1.0), en, i_forces, j_forces);
     scdata.has_force_update = true;
+    if (fn.lubrication != 0.0 && budget_on_ && budget_->active())
+      record_film(scdata, fn.lubrication * (is_wall_ ? scdata.area_ratio : 1.0), en, m_e, u_n);
   }
 
  private:
+  // The mass a contact moves, as LIGGGHTS computes sidata.meff for overlapping pairs (which it
+  // does not for surfacesClose): a rigid body's mass for its atoms, the partner's mass alone
+  // against an atom of fix freeze's group. A wall's meff is set before either call.
+  double reduced_mass(const SurfacesCloseData &scdata) const
+  {
+    if (is_wall_) return static_cast<const SurfacesIntersectData &>(scdata).meff;
+    const int i = scdata.i, j = scdata.j;
+    double m_i = atom->rmass[i], m_j = atom->rmass[j];
+    if (pair_->fr_pair()) {
+      const double *body_mass = pair_->mr_pair();
+      if (body_mass[i] > 0.0) m_i = body_mass[i];
+      if (body_mass[j] > 0.0) m_j = body_mass[j];
+    }
+    const int frozen = pair_->freeze_group_bit(), *mask = atom->mask;
+    if (mask[j] & frozen) return m_i;
+    if (mask[i] & frozen) return m_j;
+    return lubricated::reduced_mass(m_i, m_j);
+  }
+
+  // The pair's model creates the budget fix (and keeps it after the walls); a wall joins it when
+  // it exists. Dry scenes take no part: the fix then does nothing.
+  void join_film_budget(const char *caller)
+  {
+    double limit_pair = 0.0;
+    if (lubricated::liggghts::read_scalar(modify, "lubricatedLimitPair", caller, limit_pair) &&
+        limit_pair != 0.0 && limit_pair != 1.0)
+      fail(std::string(caller) + ": lubricatedLimitPair = " + lubricated::detail::number(limit_pair) +
+           " must be 0 (the films of each sphere share its many-body budget, the default) or 1 "
+           "(each film capped on its own)");
+    bool wet = false;
+    for (const lubricated::Coefficients &c : coefficients_) wet = wet || c.wet();
+    budget_ = lubricated::liggghts::FixLubricatedFilmBudget::find(lmp, !is_wall_ && wet);
+    budget_on_ = budget_ && wet;
+    if (!budget_on_) return;
+    budget_->take_part(limit_pair == 1.0);
+    if (!is_wall_) budget_->set_frozen_group_bit(pair_->freeze_group_bit());
+  }
+
+  // The film's share of its cap over the time it acts before the next evaluation (film_budget.h).
+  void record_film(const SurfacesCloseData &scdata, double film, const double *en, double m_e, double u_n)
+  {
+    const double kick = lubricated::film_kick_time(update->dt, update->setupflag != 0, false);
+    const double f[3] = {film * en[0], film * en[1], film * en[2]};
+    budget_->add_film(scdata.i, is_wall_ ? -1 : scdata.j, f,
+                      lubricated::film_share(film, m_e, u_n, kick));
+  }
+
   // LIGGGHTS integrates with velocity Verlet (fix nve/sphere).
   lubricated::Evaluation evaluation() const { return lubricated::evaluation_of(update->setupflag != 0, false); }
 
@@ -171,6 +232,9 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   }
 
   bool is_wall_;
+  LAMMPS_NS::PairGran *pair_;
+  lubricated::liggghts::FixLubricatedFilmBudget *budget_ = nullptr;
+  bool budget_on_ = false;
   bool warned_ = false;
   std::string message_;
   int ntypes_ = 0;

@@ -1,0 +1,88 @@
+// The many-body film budget of `model lubricated` in LIGGGHTS 3.8.0 (doc/model.rst, "Dense
+// beds"; the proof is in src/lubricated/film_budget.h): every film of a pair or a wall is
+// applied as LIGGGHTS applies any contact force, recorded here with its share a_k of its cap,
+// and once every film of the step is known (the pair's in its compute, the walls' in their
+// post_force) each atom's load D_i = sum_k a_k gives the scale 1 / max(1, D_i, D_j) of its
+// films; the difference is added to the forces before the velocities are updated
+// (pre_final_integrate; at a run's set-up, in setup(), after the walls' own setup).
+//
+// The pair style's model creates this fix (ID lubricated_film_budget) at its init and keeps
+// it after every fix wall/gran, so that all walls have recorded their films before it acts.
+// Its arrays live for one step: nothing is stored per atom between steps or in restart files.
+#pragma once
+
+#include "fix.h"
+
+#include <vector>
+
+namespace lubricated {
+namespace liggghts {
+
+class FixLubricatedFilmBudget : public LAMMPS_NS::Fix {
+ public:
+  static constexpr const char *id_name = "lubricated_film_budget";
+  static constexpr const char *style_name = "lubricated/film_budget";
+
+  FixLubricatedFilmBudget(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg);
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void pre_final_integrate() override;
+
+  int pack_comm(int n, int *list, double *buf, int pbc_flag, int *pbc) override;
+  void unpack_comm(int n, int first, double *buf) override;
+  int pack_reverse_comm(int n, int first, double *buf) override;
+  void unpack_reverse_comm(int n, int *list, double *buf) override;
+
+  // Whether films are to be recorded (set at this fix's init).
+  bool active() const { return active_; }
+
+  // A new step's films: called by the pair's beginPass; a wall's first film opens it too.
+  void begin();
+
+  // A film force f (already applied: on i, and -f on j) of share a = |f| t_kick / (m_e |u_n|).
+  // j < 0: a wall. With newton off a pair whose j is a ghost is recorded on both ranks.
+  void add_film(int i, int j, const double *f, double share)
+  {
+    if (!open_) begin();
+    records_.push_back(Record{i, j, {f[0], f[1], f[2]}});
+    load_[i] += share;
+    if (j >= 0 && (newton_pair_ || j < nlocal_)) load_[j] += share;
+  }
+
+  // Atoms of this group (LIGGGHTS's fix freeze) are moved by no contact: their loads limit
+  // nothing (their partners count their shares of these films).
+  void set_frozen_group_bit(int bit) { frozen_group_bit_ = bit; }
+
+  // Each model lubricated (pair and walls) takes part at every init, before this fix's own
+  // init (the pair's model at force init, the walls' in the fix order before this fix); with
+  // none left the fix does nothing. limit_pair: the films keep their per-contact caps only.
+  void take_part(bool limit_pair)
+  {
+    participants_++;
+    limit_pair_ = limit_pair_ || limit_pair;
+  }
+
+  // create: the fix with this ID, placed after every fix wall/gran (created or moved there;
+  // only before modify's init, i.e. from the pair's model). Else the fix as it is, or nullptr.
+  static FixLubricatedFilmBudget *find(LAMMPS_NS::LAMMPS *lmp, bool create);
+
+ private:
+  struct Record {
+    int i, j;
+    double f[3];
+  };
+  enum class Exchange { load, scale, correction };
+
+  void finish();
+
+  bool open_ = false, active_ = false, limit_pair_ = false;
+  int participants_ = 0;
+  int newton_pair_ = 0, nlocal_ = 0, frozen_group_bit_ = 0;
+  Exchange exchange_ = Exchange::load;
+  std::vector<Record> records_;
+  std::vector<double> load_, scale_, correction_;
+};
+
+}    // namespace liggghts
+}    // namespace lubricated
