@@ -8,6 +8,9 @@
 #include "modify.h"
 #include "update.h"
 
+#include "liggghts/lubricated_properties.h"
+#include "lubricated/contact_network.h"
+#include "lubricated/contact_network_message.h"
 #include "lubricated/film_budget.h"
 
 #include <algorithm>
@@ -44,8 +47,8 @@ LAMMPS_NS::Fix *create_fix(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg)
 FixLubricatedFilmBudget::FixLubricatedFilmBudget(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg)
 {
-  comm_forward = 1;    // scales
-  comm_reverse = 3;    // loads (1), force corrections (3)
+  comm_forward = network_values;    // scales (1), network sums (8)
+  comm_reverse = network_values;    // loads (1), force corrections (3), network sums (8)
 }
 
 int FixLubricatedFilmBudget::setmask()
@@ -94,6 +97,33 @@ void FixLubricatedFilmBudget::init()
   limit_pair_ = false;
   records_.clear();
   open_ = false;
+  network_on_ = network_pending_;
+  network_pending_ = false;
+  network_due_ = network_warned_ = false;
+  network_next_ = 0;    // the first step of each run
+}
+
+void FixLubricatedFilmBudget::begin_pass()
+{
+  if (active_) begin();
+  network_due_ = network_on_ && !update->setupflag && update->ntimestep >= network_next_;
+  if (network_due_) network_.clear();
+}
+
+void FixLubricatedFilmBudget::set_network(int ntypes, const std::vector<double> &normal_load,
+                                          const std::vector<double> &bound_load,
+                                          const std::vector<Coefficients> &coefficients)
+{
+  ntypes_ = ntypes;
+  network_load_ = normal_load;
+  network_bound_ = bound_load;
+  coefficients_ = coefficients;
+  bool matters = false;
+  for (double &b : network_bound_) {
+    if (!(b > network_check_load)) b = 0.0;    // network_load_matters(): no record, no check
+    matters = matters || b > 0.0;
+  }
+  network_on_ = network_pending_ = matters;
 }
 
 void FixLubricatedFilmBudget::setup(int)
@@ -106,16 +136,26 @@ void FixLubricatedFilmBudget::pre_final_integrate()
   finish();
 }
 
-// Loads summed on the owners, scales sent to the ghosts, then every film whose atoms are over
-// budget is scaled by 1 / max(1, D_i, D_j): its (s - 1) f added to i, -(s - 1) f to j.
+// Collective on every rank, whether it saw films and contacts or not.
 void FixLubricatedFilmBudget::finish()
 {
-  // Collective on every rank, whether it saw films or not.
-  if (!active_) {
+  if (active_) {
+    finish_films();
+  } else {
     records_.clear();
     open_ = false;
-    return;
   }
+  if (network_due_) {
+    network_due_ = false;
+    network_next_ = update->ntimestep + network_check_interval;
+    check_network();
+  }
+}
+
+// Loads summed on the owners, scales sent to the ghosts, then every film whose atoms are over
+// budget is scaled by 1 / max(1, D_i, D_j): its (s - 1) f added to i, -(s - 1) f to j.
+void FixLubricatedFilmBudget::finish_films()
+{
   if (!open_) begin();
   open_ = false;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
@@ -157,35 +197,121 @@ void FixLubricatedFilmBudget::finish()
     for (int d = 0; d < 3; d++) f[i][d] += correction_[3 * i + d];
 }
 
+// Forward: scales (1 per atom) or network sums (network_values); the return is per atom.
 int FixLubricatedFilmBudget::pack_comm(int n, int *list, double *buf, int, int *)
 {
+  if (exchange_ == Exchange::network_sums) {
+    for (int k = 0; k < n; k++)
+      std::copy_n(&network_sums_[network_values * static_cast<size_t>(list[k])], network_values,
+                  buf + network_values * k);
+    return network_values;
+  }
   for (int k = 0; k < n; k++) buf[k] = scale_[list[k]];
   return 1;
 }
 
 void FixLubricatedFilmBudget::unpack_comm(int n, int first, double *buf)
 {
+  if (exchange_ == Exchange::network_sums) {
+    std::copy_n(buf, network_values * n, &network_sums_[network_values * static_cast<size_t>(first)]);
+    return;
+  }
   for (int k = 0; k < n; k++) scale_[first + k] = buf[k];
 }
 
+// Reverse: loads (1), force corrections (3) or network sums, added on the owners.
 int FixLubricatedFilmBudget::pack_reverse_comm(int n, int first, double *buf)
 {
-  if (exchange_ == Exchange::load) {
-    for (int k = 0; k < n; k++) buf[k] = load_[first + k];
-    return 1;
-  }
-  std::copy_n(&correction_[3 * static_cast<size_t>(first)], 3 * n, buf);
-  return 3;
+  const int width = exchange_ == Exchange::load ? 1 : exchange_ == Exchange::correction ? 3 : network_values;
+  const double *values = exchange_ == Exchange::load ? load_.data()
+      : exchange_ == Exchange::correction ? correction_.data() : network_sums_.data();
+  std::copy_n(values + width * static_cast<size_t>(first), width * n, buf);
+  return width;
 }
 
 void FixLubricatedFilmBudget::unpack_reverse_comm(int n, int *list, double *buf)
 {
-  if (exchange_ == Exchange::load) {
-    for (int k = 0; k < n; k++) load_[list[k]] += buf[k];
-    return;
-  }
+  const int width = exchange_ == Exchange::load ? 1 : exchange_ == Exchange::correction ? 3 : network_values;
+  double *values = exchange_ == Exchange::load ? load_.data()
+      : exchange_ == Exchange::correction ? correction_.data() : network_sums_.data();
   for (int k = 0; k < n; k++)
-    for (int d = 0; d < 3; d++) correction_[3 * list[k] + d] += buf[3 * k + d];
+    for (int q = 0; q < width; q++) values[width * static_cast<size_t>(list[k]) + q] += buf[width * k + q];
+}
+
+// The contacts' per-atom sums on every copy of each atom, then the bounds of each contact
+// (contact_network.h): an ERROR where the lower bound proves a growing mode, a WARNING (once a
+// run) where it makes one likely and the upper bound cannot exclude it.
+void FixLubricatedFilmBudget::check_network()
+{
+  constexpr int nv = network_values;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  if (network_sums_.size() < nv * static_cast<size_t>(nall)) network_sums_.resize(nv * static_cast<size_t>(atom->nmax));
+  std::fill(network_sums_.begin(), network_sums_.begin() + nv * static_cast<size_t>(nall), 0.0);
+  for (const NetworkContact &c : network_) {
+    lubricated::add_network_contact(&network_sums_[nv * c.i], network_load_[c.type_pair], network_bound_[c.type_pair], c.m_e, c.n);
+    if (newton_pair_ || c.j < nlocal)
+      lubricated::add_network_contact(&network_sums_[nv * c.j], network_load_[c.type_pair], network_bound_[c.type_pair], c.m_e, c.n);
+  }
+  exchange_ = Exchange::network_sums;
+  if (newton_pair_) comm->reverse_comm_fix(this);
+  comm->forward_comm_fix(this);
+
+  struct {
+    double value;
+    int rank;
+  } lower{0.0, comm->me}, upper{0.0, comm->me}, reduced;
+  int worst_lower = -1, worst_upper = -1;
+  double unit_upper = 0.0;
+  for (size_t k = 0; k < network_.size(); k++) {
+    const NetworkContact &c = network_[k];
+    const double *si = &network_sums_[nv * c.i], *sj = &network_sums_[nv * c.j];
+    const double bound = network_bound_[c.type_pair];
+    const double row = network_upper_row(bound, c.m_e, si, c.m_i, sj, c.m_j);
+    const double quotient = network_lower_quotient(network_load_[c.type_pair], c.m_e, c.n, si, c.m_i, sj, c.m_j);
+    if (quotient > lower.value) lower.value = quotient, worst_lower = static_cast<int>(k);
+    if (row > upper.value) upper.value = row, worst_upper = static_cast<int>(k);
+    unit_upper = std::max(unit_upper, row / bound);
+  }
+  MPI_Allreduce(&lower, &reduced, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
+  const bool unstable = reduced.value >= stable_network_load;
+  if (!unstable) {
+    if (network_warned_ || reduced.value < likely_unstable_network_load) return;
+    MPI_Allreduce(&upper, &reduced, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
+    if (reduced.value < stable_network_load) return;
+    network_warned_ = true;
+  }
+  // What the owner of the worst contact knows, for every rank's message.
+  double info[7] = {0.0};
+  const int worst = unstable ? worst_lower : worst_upper;
+  if (comm->me == reduced.rank && worst >= 0) {
+    const NetworkContact &c = network_[worst];
+    const int *type = atom->type, *tag = atom->tag;
+    info[0] = reduced.value;
+    info[1] = std::min(type[c.i], type[c.j]);
+    info[2] = std::max(type[c.i], type[c.j]);
+    info[3] = tag[c.i];
+    info[4] = tag[c.j];
+    info[5] = network_sums_[nv * c.i + nv - 1];
+    info[6] = network_sums_[nv * c.j + nv - 1];
+  }
+  MPI_Bcast(info, 7, MPI_DOUBLE, reduced.rank, world);
+  NetworkFinding found;
+  found.unstable = unstable;
+  found.load = info[0];
+  found.type_i = static_cast<int>(info[1]);
+  found.type_j = static_cast<int>(info[2]);
+  found.tag_i = static_cast<long long>(info[3]);
+  found.tag_j = static_cast<long long>(info[4]);
+  found.contacts_i = info[5];
+  found.contacts_j = info[6];
+  MPI_Allreduce(&unit_upper, &found.largest_unit_upper, 1, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&lower.value, &found.largest_lower, 1, MPI_DOUBLE, MPI_MAX, world);
+  // LIGGGHTS's Error keeps a pointer to the text: it must outlive this call.
+  static std::string message;
+  message = with_property_names(network_message(
+      "model lubricated", coefficients_[found.type_i * (ntypes_ + 1) + found.type_j], update->dt, found));
+  if (unstable) error->all(FLERR, message.c_str());
+  if (comm->me == 0) error->warning(FLERR, message.c_str());
 }
 
 }    // namespace liggghts

@@ -9,9 +9,15 @@
 // The pair style's model creates this fix (ID lubricated_film_budget) at its init and keeps
 // it after every fix wall/gran, so that all walls have recorded their films before it acts.
 // Its arrays live for one step: nothing is stored per atom between steps or in restart files.
+//
+// The same fix checks the network of sustained contacts (lubricated/contact_network.h) every
+// network_check_interval steps where a contact's load can matter (N_c below about 7): an ERROR
+// when a mode of the packing provably grows every step, a WARNING when one is likely.
 #pragma once
 
 #include "fix.h"
+
+#include "lubricated/coefficients.h"
 
 #include <vector>
 
@@ -50,6 +56,23 @@ class FixLubricatedFilmBudget : public LAMMPS_NS::Fix {
     if (j >= 0 && (newton_pair_ || j < nlocal_)) load_[j] += share;
   }
 
+  // The pair's beginPass: a new step's films, and whether the contact network is checked.
+  void begin_pass();
+
+  // The network check's data, from the pair's model (its models are rebuilt when dt changes):
+  // per type pair (index i * (ntypes + 1) + j) the normal load of a sustained contact, the load
+  // that bounds its normal and tangential springs, and the coefficients (for the message).
+  void set_network(int ntypes, const std::vector<double> &normal_load, const std::vector<double> &bound_load,
+                   const std::vector<Coefficients> &coefficients);
+  bool network_due() const { return network_due_; }
+  bool network_load_matters(int type_pair) const { return network_bound_[type_pair] > 0.0; }
+
+  // A contact in overlap now and a step ago; masses the contact moves (infinite: held).
+  void add_network_contact(int i, int j, int type_pair, const double *n, double m_e, double m_i, double m_j)
+  {
+    network_.push_back(NetworkContact{i, j, type_pair, {n[0], n[1], n[2]}, m_e, m_i, m_j});
+  }
+
   // Atoms of this group (LIGGGHTS's fix freeze) are moved by no contact: their loads limit
   // nothing (their partners count their shares of these films).
   void set_frozen_group_bit(int bit) { frozen_group_bit_ = bit; }
@@ -72,9 +95,15 @@ class FixLubricatedFilmBudget : public LAMMPS_NS::Fix {
     int i, j;
     double f[3];
   };
-  enum class Exchange { load, scale, correction };
+  struct NetworkContact {
+    int i, j, type_pair;
+    double n[3], m_e, m_i, m_j;
+  };
+  enum class Exchange { load, scale, correction, network_sums };
 
   void finish();
+  void finish_films();
+  void check_network();
 
   bool open_ = false, active_ = false, limit_pair_ = false;
   int participants_ = 0;
@@ -82,6 +111,13 @@ class FixLubricatedFilmBudget : public LAMMPS_NS::Fix {
   Exchange exchange_ = Exchange::load;
   std::vector<Record> records_;
   std::vector<double> load_, scale_, correction_;
+
+  bool network_on_ = false, network_pending_ = false, network_due_ = false, network_warned_ = false;
+  long long network_next_ = 0;
+  int ntypes_ = 0;
+  std::vector<double> network_load_, network_bound_, network_sums_;
+  std::vector<Coefficients> coefficients_;
+  std::vector<NetworkContact> network_;
 };
 
 }    // namespace liggghts

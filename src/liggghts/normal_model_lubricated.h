@@ -32,6 +32,7 @@ NORMAL_MODEL(LUBRICATED, lubricated, 42)
 
 #include "liggghts/fix_lubricated_film_budget.h"
 #include "liggghts/lubricated_properties.h"
+#include "lubricated/contact_network.h"
 #include "lubricated/film_budget.h"
 #include "lubricated/normal_model.h"
 
@@ -58,7 +59,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   void postSettings(IContactHistorySetup *, ContactModelBase *) {}
   void beginPass(SurfacesIntersectData &, ForceData &, ForceData &)
   {
-    if (budget_on_) budget_->begin();
+    if (budget_ && !is_wall_) budget_->begin_pass();
   }
   void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
   double stressStrainExponent() { return 1.0; }
@@ -119,6 +120,14 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     apply(fn.total() * (is_wall_ ? sidata.area_ratio : 1.0), sidata.en, i_forces, j_forces);
     if (fn.lubrication != 0.0 && budget_on_ && budget_->active())
       record_film(sidata, fn.lubrication * (is_wall_ ? sidata.area_ratio : 1.0), sidata.en, m_e, u_n);
+    // In overlap a step ago too: a sustained contact of the network check.
+    if (!is_wall_ && budget_ && budget_->network_due() && budget_->network_load_matters(t) &&
+        gap - u_n * dt_ < 0.0) {
+      double m_i, m_j;
+      contact_masses(sidata, m_i, m_j);
+      if (std::isfinite(m_i) || std::isfinite(m_j))
+        budget_->add_network_contact(sidata.i, sidata.j, t, sidata.en, m_e, m_i, m_j);
+    }
   }
 
   // Near contact: the film, and the step-exact contact's first and last steps.
@@ -166,6 +175,22 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     return lubricated::reduced_mass(m_i, m_j);
   }
 
+  // The masses of a pair's atoms as the contact moves them: a rigid body's, infinite in fix
+  // freeze's group (the network check's sums; contact_network.h).
+  void contact_masses(const SurfacesCloseData &scdata, double &m_i, double &m_j) const
+  {
+    const int i = scdata.i, j = scdata.j, frozen = pair_->freeze_group_bit(), *mask = atom->mask;
+    m_i = atom->rmass[i];
+    m_j = atom->rmass[j];
+    if (pair_->fr_pair()) {
+      const double *body_mass = pair_->mr_pair();
+      if (body_mass[i] > 0.0) m_i = body_mass[i];
+      if (body_mass[j] > 0.0) m_j = body_mass[j];
+    }
+    if (mask[i] & frozen) m_i = INFINITY;
+    if (mask[j] & frozen) m_j = INFINITY;
+  }
+
   // The pair's model creates the budget fix (and keeps it after the walls); a wall joins it when
   // it exists. Dry scenes take no part: the fix then does nothing.
   void join_film_budget(const char *caller)
@@ -178,11 +203,37 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
            "(each film capped on its own)");
     bool wet = false;
     for (const lubricated::Coefficients &c : coefficients_) wet = wet || c.wet();
-    budget_ = lubricated::liggghts::FixLubricatedFilmBudget::find(lmp, !is_wall_ && wet);
+    std::vector<double> normal, bound;
+    const bool network = network_loads(normal, bound);
+    budget_ = lubricated::liggghts::FixLubricatedFilmBudget::find(lmp, !is_wall_ && (wet || network));
     budget_on_ = budget_ && wet;
-    if (!budget_on_) return;
-    budget_->take_part(limit_pair == 1.0);
-    if (!is_wall_) budget_->set_frozen_group_bit(pair_->freeze_group_bit());
+    if (!budget_) return;
+    if (!is_wall_) {
+      budget_->set_network(ntypes_, normal, bound, coefficients_);
+      budget_->set_frozen_group_bit(pair_->freeze_group_bit());
+    }
+    if (budget_on_) budget_->take_part(limit_pair == 1.0);
+  }
+
+  // Loads of a sustained contact per type pair (contact_network.h): the exact normal contact's,
+  // and the larger of it and LIGGGHTS's explicit tangential spring-dashpot's (kt = 2/7 k and
+  // gammat = 2/7 c on the tangential mass 2/7 m_e: the sampled normal load). True when one
+  // can matter.
+  bool network_loads(std::vector<double> &normal, std::vector<double> &bound) const
+  {
+    normal.assign(models_.size(), 0.0);
+    bound.assign(models_.size(), 0.0);
+    bool matters = false;
+    for (int i = 1; i <= ntypes_; i++)
+      for (int j = 1; j <= ntypes_; j++) {
+        const int t = i * (ntypes_ + 1) + j;
+        const lubricated::NormalModel &m = models_[t];
+        normal[t] = lubricated::contact_load(m.step.stiffness_step, m.step.damping_step, dt_);
+        bound[t] = std::max(normal[t], lubricated::contact_load(m.contact.stiffness_per_mass,
+                                                                 m.contact.damping_per_mass, dt_));
+        matters = matters || bound[t] > lubricated::network_check_load;
+      }
+    return matters;
   }
 
   // The film's share of its cap over the time it acts before the next evaluation (film_budget.h).
@@ -220,6 +271,11 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     dt_ = update->dt;
     models_ = lubricated::liggghts::build_models(coefficients_, ntypes_, is_wall_, dt_, message_);
     if (!message_.empty()) fail(message_);
+    if (budget_ && !is_wall_) {    // a new time step: new network loads
+      std::vector<double> normal, bound;
+      network_loads(normal, bound);
+      budget_->set_network(ntypes_, normal, bound, coefficients_);
+    }
   }
 
   // A contact whose previous step was not evaluated: its entry is integrated approximately.

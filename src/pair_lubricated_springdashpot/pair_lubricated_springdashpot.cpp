@@ -9,6 +9,7 @@
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_wall_lubrication/fix_wall_lubrication.h"
 #include "lubricated/contact_network.h"
+#include "lubricated/contact_network_message.h"
 #include "lubricated/film_budget.h"
 
 #include "atom.h"
@@ -665,35 +666,21 @@ void PairLubricatedSpringDashpot::check_contact_network(int ncandidate)
     info[6] = network_sums[nv * j + nv - 1];
   }
   MPI_Bcast(info, 7, MPI_DOUBLE, reduced.rank, world);
-  double largest_unit = 0.0, largest_lower = 0.0;
-  MPI_Allreduce(&unit_upper, &largest_unit, 1, MPI_DOUBLE, MPI_MAX, world);
-  MPI_Allreduce(&lower.value, &largest_lower, 1, MPI_DOUBLE, MPI_MAX, world);
-  const int itype = static_cast<int>(info[1]), jtype = static_cast<int>(info[2]);
-  const lub::Coefficients &c = coeffs[index(itype, jtype)];
-  const double steps = c.steps_per_contact(dt);
-  // N_c at which the upper bound of this packing would be below 4 (same e_d and e_t).
-  const double needed = lub::contact_steps_for_load(
-      c.e_dry, c.friction > 0.0 ? c.tangential_restitution() : -1.0, lub::stable_network_load / largest_unit);
-  const std::string duration = c.t_contact > 0.0
-      ? fmt::format("tcontact = {:.6g} (N_c = t_c / dt = {:.3g})", c.t_contact, steps)
-      : fmt::format("ncontact = {:.6g}", steps);
-  const std::string remedy = c.t_contact > 0.0
-      ? fmt::format("a longer tcontact or a timestep <= {:.3g} (N_c >= {:.3g})", c.t_contact / needed, needed)
-      : fmt::format("ncontact >= {:.3g}", needed);
-  const std::string atoms = fmt::format("atoms {} ({} contacts) and {} ({})", static_cast<tagint>(info[3]),
-                                        info[5], static_cast<tagint>(info[4]), info[6]);
-  if (unstable)
-    error->all(FLERR, "{} types {} {}: {} is too short a contact for this packing: the contacts of {} "
-               "have a mode that grows every step (load {:.3g} >= 4; the springs and dashpots of a bed are "
-               "stable under velocity Verlet only below 4: doc page, Dense beds: the contact network). Use {} "
-               "(which keeps every mode of this packing stable) or fewer contacts per sphere",
-               STYLE, itype, jtype, duration, atoms, info[0], remedy);
-  if (comm->me == 0)
-    error->warning(FLERR, "{} types {} {}: with {} the contact network of this packing is likely unstable: its "
-                   "load is at least {:.3g} (a growing mode is proven from 4; the largest load was at most 1.5 times "
-                   "this bound on random packings) and stability is not guaranteed ({} reach the upper bound {:.3g} "
-                   ">= 4). If the energy grows or atoms are lost, use {}", STYLE, itype, jtype, duration,
-                   largest_lower, atoms, info[0], remedy);
+  lub::NetworkFinding found;
+  found.unstable = unstable;
+  found.load = info[0];
+  found.type_i = static_cast<int>(info[1]);
+  found.type_j = static_cast<int>(info[2]);
+  found.tag_i = static_cast<long long>(info[3]);
+  found.tag_j = static_cast<long long>(info[4]);
+  found.contacts_i = info[5];
+  found.contacts_j = info[6];
+  MPI_Allreduce(&unit_upper, &found.largest_unit_upper, 1, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&lower.value, &found.largest_lower, 1, MPI_DOUBLE, MPI_MAX, world);
+  const std::string message =
+      lub::network_message(STYLE, coeffs[index(found.type_i, found.type_j)], update->dt, found);
+  if (unstable) error->all(FLERR, message);
+  if (comm->me == 0) error->warning(FLERR, message);
 }
 
 // Tangential force ft on i (on j: -ft) and the torques ti, tj of one pair (tangential.h);

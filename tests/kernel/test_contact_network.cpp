@@ -3,6 +3,7 @@
 // when lambda_max(S) < 4, S = sum_k s_k b_k b_k^T; the per-atom bounds must bracket lambda_max,
 // be exact for an isolated pair, and predict the growth of the actual recurrence.
 #include "lubricated/contact_network.h"
+#include "lubricated/contact_network_message.h"
 #include "lubricated/contact_step.h"
 #include "lubricated/tangential.h"
 
@@ -10,6 +11,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 using namespace lubricated;
@@ -247,4 +249,45 @@ TEST(ContactNetwork, StepsForLoadInvertsTheLoad)
       EXPECT_GE(both, n * (1.0 - 1e-3));
       EXPECT_LE(contact_load_of_steps(0.3, both), target * (1.0 + 1e-9));
     }
+}
+
+// The message both engines print: the duration as given, the atoms, the load and a remedy whose
+// N_c brings the worst upper bound below 4 (contact_steps_for_load).
+TEST(ContactNetwork, MessageNamesTheDurationAndARemedyThatHolds)
+{
+  Coefficients c;
+  c.e_dry = 0.9;
+  c.n_contact = 2.0;
+  NetworkFinding f;
+  f.unstable = true;
+  f.load = 4.92;
+  f.type_i = 1;
+  f.type_j = 2;
+  f.tag_i = 70;
+  f.tag_j = 82;
+  f.contacts_i = 8;
+  f.contacts_j = 9;
+  f.largest_unit_upper = 10.1;
+  f.largest_lower = 4.92;
+  const double dt = 1e-5;
+  const std::string error = network_message("pair_style x", c, dt, f);
+  EXPECT_EQ(error.rfind("pair_style x types 1 2: ncontact = 2 is too short a contact for this packing", 0), 0u);
+  EXPECT_NE(error.find("atoms 70 (8 contacts) and 82 (9)"), std::string::npos);
+  EXPECT_NE(error.find("(load 4.92 >= 4;"), std::string::npos);
+  const double needed = contact_steps_for_load(0.9, -1.0, stable_network_load / f.largest_unit_upper);
+  EXPECT_LE(contact_load_of_steps(0.9, needed) * f.largest_unit_upper, stable_network_load * (1 + 1e-9));
+  char remedy[64];
+  std::snprintf(remedy, sizeof remedy, "Use ncontact >= %.3g ", needed);
+  EXPECT_NE(error.find(remedy), std::string::npos);
+
+  c.n_contact = 8.0;
+  c.t_contact = 2e-5;
+  f.unstable = false;
+  f.load = 5.36;
+  f.largest_lower = 3.15;
+  const std::string warning = network_message("model lubricated", c, dt, f);
+  EXPECT_NE(warning.find("with tcontact = 2e-05 (N_c = t_c / dt = 2) the contact network of this packing "
+                         "is likely unstable: its load is at least 3.15"), std::string::npos);
+  EXPECT_NE(warning.find("reach the upper bound 5.36 >= 4"), std::string::npos);
+  EXPECT_NE(warning.find("a longer tcontact or a timestep <="), std::string::npos);
 }

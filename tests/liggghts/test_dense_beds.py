@@ -107,10 +107,7 @@ def settling_bed(steps, limit="atom"):
                             "compute pg all reduce sum v_pz\nvariable E equal ke+c_rot+c_pg\n"
                             "thermo_style    custom step atoms ke c_rot c_zmax v_E")
     script = script.replace("thermo          5000", "thermo          100\nthermo_modify   format float %.17g")
-    if limit == "pair":
-        script = script.replace("pair_style      gran",
-                                "fix m10 all property/global lubricatedLimitPair scalar 1\npair_style      gran")
-    return script, {"wet": 1, "steps": steps}
+    return script, {"wet": 1, "steps": steps, "limit": 1 if limit == "pair" else 0}
 
 
 def bed_energies(log):
@@ -182,3 +179,85 @@ def test_limit_pair_takes_zero_or_one(run, value):
         "pair_style gran", f"fix m5 all property/global lubricatedLimitPair scalar {value}\npair_style gran")
     with pytest.raises(lammps_run.LammpsError, match=f"lubricatedLimitPair = {value}"):
         run.lig(script)
+
+
+# ------------------------------------------------------------------------------------------
+# The contact network (lubricated/contact_network.h): contacts too short for the packing
+# ------------------------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def preloaded():
+    """The LAMMPS tests' random 1:10 packing at solid fraction 0.70 (300 spheres, 592 sustained
+    contacts), built by the LAMMPS plugin, with random velocities: LIGGGHTS reads the data file."""
+    import dense_packings
+    if not lammps_run.PLUGIN.exists():
+        pytest.skip(f"{lammps_run.PLUGIN} is missing: run 'make build'")
+    root = ROOT / "build" / "test-scratch-liggghts" / "packings"
+    data, _ = dense_packings.build(root / "p70", 0.70)
+    return dense_packings.with_velocities(data, root / "start.data")
+
+
+def packing_run(data, duration, dt=5e-6, steps=500):
+    import dense_packings
+    return f"""atom_style granular
+atom_modify map array
+communicate single vel yes
+newton off
+units si
+boundary p p p
+read_data {data}
+fix m1 all property/global coefficientRestitution peratomtypepair 1 0.9
+fix m2 all property/global {duration}
+pair_style gran model lubricated
+pair_coeff * *
+neighbor {0.2 * dense_packings.R_MIN} bin
+neigh_modify delay 0
+fix nve all nve/sphere
+timestep {dt}
+thermo_style custom step atoms ke
+thermo_modify lost error
+thermo 50
+run {steps}
+variable n equal atoms
+print "RESULT atoms ${{n}}"
+"""
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+@pytest.mark.parametrize("duration,named", [
+    ("lubricatedContactSteps scalar 2", "lubricatedContactSteps = 2 "),
+    ("lubricatedContactSteps scalar 1", "lubricatedContactSteps = 1 "),
+    ("lubricatedContactTime scalar 1e-5", "lubricatedContactTime = 1e-05 (N_c = t_c / dt = 2)")])
+def test_too_short_a_contact_stops_with_an_error(run, preloaded, duration, named, nprocs):
+    """The preloaded bed, dry, N_c <= 2: a mode of the contact network grows every step (lower
+    bound 4.92 at N_c = 2, 7.18 at 1, as in the LAMMPS plugin). Before the check LIGGGHTS lost
+    atoms without a word: 300 spheres down to 12 (N_c = 2) and 5 (N_c = 1) in 500 steps."""
+    with pytest.raises(lammps_run.LammpsError) as err:
+        run.lig(packing_run(preloaded, duration), nprocs=nprocs)
+    message = str(err.value)
+    assert named in message and "too short a contact for this packing" in message
+    assert "contacts) and" in message and "grows every step" in message
+    if "Steps" in duration:
+        assert "Use lubricatedContactSteps >=" in message
+    else:
+        assert "a timestep <=" in message
+    assert "Lost atoms" not in err.value.log
+
+
+def test_a_long_enough_contact_runs(run, preloaded):
+    """N_c = 8 (load 0.20, below the check's 0.25): no check, no atom lost."""
+    assert run.lig(packing_run(preloaded, "lubricatedContactSteps scalar 8"))["atoms"] == 300
+    assert "WARNING" not in run.log
+
+
+def test_likely_unstable_network_is_warned_once_a_run(run):
+    """The settling bed at N_c = 2: columns of two contacts per sphere (lower bound 3.15, upper
+    5.36): a growing mode is likely, not proven; one WARNING per run, and the bed does not
+    settle (its top stays near 31 d instead of 22.5 d)."""
+    script = (ROOT / "examples" / "liggghts" / "in.settling_bed").read_text()
+    result = run.lig(script.replace("variable N_c     equal 8", "variable N_c     equal 2"),
+                     variables={"steps": 20000, "settled": 2000})
+    warnings = [line for line in run.log.splitlines() if "likely unstable" in line]
+    assert len(warnings) == 2
+    assert "lubricatedContactSteps = 2" in warnings[0] and "use lubricatedContactSteps >=" in warnings[0]
+    assert result["top"] > 25.0
