@@ -99,13 +99,16 @@ void FixLubricatedFilmBudget::init()
   open_ = false;
   network_on_ = network_pending_;
   network_pending_ = false;
+  walls_ = pending_walls_;
+  pending_walls_.clear();
+  films_can_exceed_ = true;    // until the set-up's bounds say otherwise
   network_due_ = network_warned_ = false;
   network_next_ = 0;    // the first step of each run
 }
 
 void FixLubricatedFilmBudget::begin_pass()
 {
-  if (active_) begin();
+  if (active()) begin();
   network_due_ = network_on_ && !update->setupflag && update->ntimestep >= network_next_;
   if (network_due_) network_.clear();
 }
@@ -126,6 +129,43 @@ void FixLubricatedFilmBudget::set_network(int ntypes, const std::vector<double> 
   network_on_ = network_pending_ = matters;
 }
 
+double *FixLubricatedFilmBudget::bound_of_atoms()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  if (static_cast<int>(load_.size()) < nall) {
+    load_.resize(atom->nmax);
+    scale_.resize(atom->nmax);
+    correction_.resize(3 * static_cast<size_t>(atom->nmax));
+  }
+  std::fill(load_.begin(), load_.begin() + nall, 0.0);
+  return load_.data();
+}
+
+// Collective. The walls' bounds with the spheres' own masses (a rigid body's is larger: its
+// bound smaller), every atom counted as near every wall.
+void FixLubricatedFilmBudget::decide_skip()
+{
+  const int nlocal = atom->nlocal;
+  const double *radius = atom->radius, *rmass = atom->rmass, dt = update->dt;
+  double *bound = load_.data();
+  newton_pair_ = force->newton_pair;
+  if (newton_pair_) {
+    exchange_ = Exchange::load;
+    comm->reverse_comm_fix(this);
+  }
+  const int *type = atom->type;
+  for (const WallFilms &wall : walls_)
+    for (int i = 0; i < nlocal; i++)
+      bound[i] += wall.mesh ? 1.0 : film_share_bound(wall.by_type[type[i]], radius[i], rmass[i], dt);
+  // A margin for the rounding of the film's integral (film_budget.h, ~1e-12 relative).
+  constexpr double below_one = 1.0 - 1e-6;
+  int over = 0;
+  for (int i = 0; i < nlocal; i++) over |= bound[i] > below_one;
+  int any_over = 0;
+  MPI_Allreduce(&over, &any_over, 1, MPI_INT, MPI_MAX, world);
+  films_can_exceed_ = any_over != 0;
+}
+
 void FixLubricatedFilmBudget::setup(int)
 {
   finish();
@@ -139,7 +179,7 @@ void FixLubricatedFilmBudget::pre_final_integrate()
 // Collective on every rank, whether it saw films and contacts or not.
 void FixLubricatedFilmBudget::finish()
 {
-  if (active_) {
+  if (active()) {
     finish_films();
   } else {
     records_.clear();

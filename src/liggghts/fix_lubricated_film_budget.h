@@ -18,6 +18,7 @@
 #include "fix.h"
 
 #include "lubricated/coefficients.h"
+#include "lubricated/lubrication.h"
 
 #include <vector>
 
@@ -40,8 +41,23 @@ class FixLubricatedFilmBudget : public LAMMPS_NS::Fix {
   int pack_reverse_comm(int n, int first, double *buf) override;
   void unpack_reverse_comm(int n, int *list, double *buf) override;
 
-  // Whether films are to be recorded (set at this fix's init).
-  bool active() const { return active_; }
+  // Whether films are to be recorded this step (set at this fix's init and at every neighbor
+  // list build, see bound_of_atoms()).
+  bool active() const { return active_ && films_can_exceed_; }
+
+  // The budget is skipped until the next neighbor list build where no atom's films can exceed
+  // it (film_budget.h, film_share_bound): the pair's model adds, at each build, the share bounds
+  // of the pairs that can reach the film before the next build to these per-atom sums (zeroed,
+  // owned and ghost atoms), then decide_skip() adds the walls' and decides for every rank.
+  double *bound_of_atoms();
+  void decide_skip();
+
+  // A wall's films by atom type (index: the type), for the bounds (take_part() too). mesh: a
+  // sphere may be in the films of several of its triangles at once: no bound.
+  void add_wall_films(const std::vector<Lubrication> &by_type, bool mesh)
+  {
+    pending_walls_.push_back(WallFilms{by_type, mesh});
+  }
 
   // A new step's films: called by the pair's beginPass; a wall's first film opens it too.
   void begin();
@@ -99,13 +115,18 @@ class FixLubricatedFilmBudget : public LAMMPS_NS::Fix {
     int i, j, type_pair;
     double n[3], m_e, m_i, m_j;
   };
+  struct WallFilms {
+    std::vector<Lubrication> by_type;
+    bool mesh;
+  };
   enum class Exchange { load, scale, correction, network_sums };
 
   void finish();
   void finish_films();
   void check_network();
 
-  bool open_ = false, active_ = false, limit_pair_ = false;
+  bool open_ = false, active_ = false, limit_pair_ = false, films_can_exceed_ = true;
+  std::vector<WallFilms> walls_, pending_walls_;
   int participants_ = 0;
   int newton_pair_ = 0, nlocal_ = 0, frozen_group_bit_ = 0;
   Exchange exchange_ = Exchange::load;

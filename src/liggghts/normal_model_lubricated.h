@@ -25,7 +25,9 @@ NORMAL_MODEL(LUBRICATED, lubricated, 42)
 #include "comm.h"
 #include "error.h"
 #include "fix_property_global.h"
+#include "fix_wall_gran.h"
 #include "modify.h"
+#include "neigh_list.h"
 #include "neighbor.h"
 #include "pair_gran.h"
 #include "update.h"
@@ -51,7 +53,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
  public:
   NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, ContactModelBase *cmb) :
       NormalModelBase(lmp, hsetup, cmb), is_wall_(cmb->is_wall()),
-      pair_(is_wall_ ? nullptr : static_cast<LAMMPS_NS::PairGran *>(hsetup))
+      pair_(is_wall_ ? nullptr : static_cast<LAMMPS_NS::PairGran *>(hsetup)), hsetup_(hsetup)
   {
   }
 
@@ -59,7 +61,10 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   void postSettings(IContactHistorySetup *, ContactModelBase *) {}
   void beginPass(SurfacesIntersectData &, ForceData &, ForceData &)
   {
-    if (budget_ && !is_wall_) budget_->begin_pass();
+    if (!budget_ || is_wall_) return;
+    if (budget_on_ && (neighbor->ago == 0 || update->setupflag || update->dt != bound_dt_))
+      bound_film_shares();
+    budget_->begin_pass();
   }
   void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
   double stressStrainExponent() { return 1.0; }
@@ -162,7 +167,11 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   double reduced_mass(const SurfacesCloseData &scdata) const
   {
     if (is_wall_) return static_cast<const SurfacesIntersectData &>(scdata).meff;
-    const int i = scdata.i, j = scdata.j;
+    return pair_reduced_mass(scdata.i, scdata.j);
+  }
+
+  double pair_reduced_mass(int i, int j) const
+  {
     double m_i = atom->rmass[i], m_j = atom->rmass[j];
     if (pair_->fr_pair()) {
       const double *body_mass = pair_->mr_pair();
@@ -207,12 +216,56 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     const bool network = network_loads(normal, bound);
     budget_ = lubricated::liggghts::FixLubricatedFilmBudget::find(lmp, !is_wall_ && (wet || network));
     budget_on_ = budget_ && wet;
+    bound_dt_ = -1.0;
     if (!budget_) return;
     if (!is_wall_) {
       budget_->set_network(ntypes_, normal, bound, coefficients_);
       budget_->set_frozen_group_bit(pair_->freeze_group_bit());
     }
-    if (budget_on_) budget_->take_part(limit_pair == 1.0);
+    if (!budget_on_) return;
+    budget_->take_part(limit_pair == 1.0);
+    if (is_wall_) {    // the films of the wall's type with each atom type
+      auto *wall = static_cast<LAMMPS_NS::FixWallGran *>(hsetup_);
+      const int wall_type = wall->atom_type_wall();
+      const bool known = wall_type >= 1 && wall_type <= ntypes_;
+      std::vector<lubricated::Lubrication> by_type(ntypes_ + 1);
+      for (int t = 1; known && t <= ntypes_; t++)
+        by_type[t] = models_[t * (ntypes_ + 1) + wall_type].lubrication;
+      budget_->add_wall_films(by_type, wall->is_mesh_wall() || !known);    // unknown: no bound
+    }
+  }
+
+  // At each neighbor list build (and a new time step): the share bounds of the pairs of the list
+  // that can reach the film before the next build (they close by at most the skin), summed per
+  // atom with the walls' by the budget fix, which skips the budget where no sum exceeds 1.
+  void bound_film_shares()
+  {
+    if (update->dt != dt_) build_models();
+    bound_dt_ = update->dt;
+    double *bound = budget_->bound_of_atoms();
+    double **x = atom->x;
+    const double *radius = atom->radius;
+    const int *type = atom->type;
+    const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+    const double skin = neighbor->skin;
+    const LAMMPS_NS::NeighList *list = pair_->list;
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      const int *jlist = list->firstneigh[i];
+      for (int jj = 0; jj < list->numneigh[i]; jj++) {
+        const int j = jlist[jj] & NEIGHMASK;
+        const lubricated::Lubrication &film = models_[type[i] * (ntypes_ + 1) + type[j]].lubrication;
+        if (!film.active()) continue;
+        const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+        const double film_radius = lubricated::lubrication_radius_pair(radius[i], radius[j]);
+        const double reach = radius[i] + radius[j] + film.reach(film_radius) + skin;
+        if (dx * dx + dy * dy + dz * dz >= reach * reach) continue;
+        const double b = lubricated::film_share_bound(film, film_radius, pair_reduced_mass(i, j), dt_);
+        bound[i] += b;
+        if (newton_pair || j < nlocal) bound[j] += b;
+      }
+    }
+    budget_->decide_skip();
   }
 
   // Loads of a sustained contact per type pair (contact_network.h): the exact normal contact's,
@@ -289,6 +342,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
 
   bool is_wall_;
   LAMMPS_NS::PairGran *pair_;
+  IContactHistorySetup *hsetup_;    // the pair style or the wall fix
+  double bound_dt_ = -1.0;          // the time step of the last share bounds
   lubricated::liggghts::FixLubricatedFilmBudget *budget_ = nullptr;
   bool budget_on_ = false;
   bool warned_ = false;

@@ -96,18 +96,20 @@ __attribute__((always_inline)) inline double film_share(double film_force, doubl
 }
 
 // A bound on the share of any film contact of film radius R and reduced mass m_e (a wall:
-// m_e = m), for any gap and velocity: with a fixed eps_al the film's impulse over a gap change
-// dg is at most 6 pi mu_f R (lambda(eps_1) - lambda(eps_al)) |dg| (lambda decreases with the gap
-// and is held at lambda(eps_1) below eps_1, lubrication.h), and |dg| = |u_n| t_kick with
-// t_kick <= dt, so a_k <= 6 pi mu_f R (lambda(eps_1) - lambda(eps_al)) dt / m_e; never above 1
-// (the contact's own cap). With a grid spacing eps_al differs per contact: 1, no bound.
-// Where the bounds of an atom's possible film contacts sum to 1 or less, its load cannot
-// exceed 1 and the budget has nothing to do.
+// m_e = m), for any gap and velocity: with the contact's eps_al (fixed, or 0.75 dx / R with a grid
+// spacing: the same for the contact at every step) the film's impulse over a gap change dg is at
+// most 6 pi mu_f R (lambda(eps_1) - lambda(eps_al)) |dg| (lambda decreases with the gap and is
+// held at lambda(eps_1) below eps_1, lubrication.h), and |dg| = |u_n| t_kick with t_kick <= dt,
+// so a_k <= 6 pi mu_f R (lambda(eps_1) - lambda(eps_al)) dt / m_e; never above 1 (the contact's
+// own cap); 0 where a grid leaves no film (0.75 dx / R <= eps_1). Where the bounds of an atom's
+// possible film contacts sum to 1 or less, its load cannot exceed 1 and the budget has nothing
+// to do.
 inline double film_share_bound(const Lubrication &film, double film_radius, double reduced_mass, double dt)
 {
   if (!film.active()) return 0.0;
-  if (film.grid_spacing > 0.0) return 1.0;
-  const double slope = film.lambda_saturated - film.lambda_activation;
+  const double lambda_al =
+      film.grid_spacing > 0.0 ? film.activation(FilmRadius(film_radius)).lambda : film.lambda_activation;
+  const double slope = std::max(0.0, film.lambda_saturated - lambda_al);
   return std::min(1.0, film.six_pi_mu * film_radius * slope * dt / reduced_mass);
 }
 

@@ -166,8 +166,9 @@ TEST(FilmBudget, KickTimeFollowsTheEvaluation)
 }
 
 // film_share_bound: no film share, for any gap, approach or separation speed, evaluation and
-// wall or pair, exceeds it (the pair style skips the budget where the bounds of an atom's
-// possible contacts sum to <= 1); with a grid spacing there is no bound (1).
+// wall or pair, with a fixed activation or a grid spacing (eps_al = 0.75 dx / R per contact),
+// exceeds it (the pair style and the LIGGGHTS model skip the budget where the bounds of an
+// atom's possible contacts sum to <= 1).
 TEST(FilmBudget, ShareBoundHoldsForEveryGapAndSpeed)
 {
   std::mt19937_64 rng(20261125);
@@ -175,42 +176,45 @@ TEST(FilmBudget, ShareBoundHoldsForEveryGapAndSpeed)
   const double dt = 1e-5, radius = 1e-3, m_e = 4e-6;
   int tested = 0;
   for (Partner partner : {Partner::particle, Partner::wall})
-    for (double mu : {1e-4, 1e-3, 1e-2, 1.0}) {
-      Coefficients c;
-      c.e_dry = 0.9;
-      c.viscosity = mu;
-      c.eps_activation = 0.1;
-      const NormalModel m = make_normal_model(c, partner, dt);
-      const double bound = film_share_bound(m.lubrication, radius, m_e, dt);
-      EXPECT_GT(bound, 0.0);
-      EXPECT_LE(bound, 1.0);
-      double largest = 0.0;
-      for (int k = 0; k < 20000; k++) {
-        const double gap = radius * (-0.02 + 0.14 * unit(rng));
-        const double u_n = (unit(rng) < 0.5 ? -1.0 : 1.0) * std::pow(10.0, -4.0 + 4.0 * unit(rng));
-        for (Evaluation when : {Evaluation::step, Evaluation::verlet_start, Evaluation::midpoint_start}) {
-          const double film = normal_force(m, gap, radius, m_e, u_n, when).lubrication;
-          const double kick = film_kick_time(dt, when != Evaluation::step, when == Evaluation::midpoint_start);
-          const double share = film_share(film, m_e, u_n, kick);
-          largest = std::max(largest, share);
-          // 1e-9: the film is a difference of its integral at two gaps, P ~ 10 apart by
-          // lambda(eps_1) |d eps| ~ 1e-3 here, so it rounds to ~1e-12 relative (the pair
-          // style keeps a margin of 1e-6 below 1).
-          ASSERT_LE(share, bound * (1.0 + 1e-9)) << "gap " << gap << " u_n " << u_n;
-          tested++;
+    for (double mu : {1e-4, 1e-3, 1e-2, 1.0})
+      for (double grid : {0.0, 2e-5, 1.25e-4}) {    // eps_al 0.1, 0.015, 0.094
+        Coefficients c;
+        c.e_dry = 0.9;
+        c.viscosity = mu;
+        if (grid > 0.0) c.grid_spacing = grid;
+        else c.eps_activation = 0.1;
+        const NormalModel m = make_normal_model(c, partner, dt);
+        const double bound = film_share_bound(m.lubrication, radius, m_e, dt);
+        EXPECT_GT(bound, 0.0);
+        EXPECT_LE(bound, 1.0);
+        double largest = 0.0;
+        for (int k = 0; k < 20000; k++) {
+          const double gap = radius * (-0.02 + 0.14 * unit(rng));
+          const double u_n = (unit(rng) < 0.5 ? -1.0 : 1.0) * std::pow(10.0, -4.0 + 4.0 * unit(rng));
+          for (Evaluation when : {Evaluation::step, Evaluation::verlet_start, Evaluation::midpoint_start}) {
+            const double film = normal_force(m, gap, radius, m_e, u_n, when).lubrication;
+            const double kick = film_kick_time(dt, when != Evaluation::step, when == Evaluation::midpoint_start);
+            const double share = film_share(film, m_e, u_n, kick);
+            largest = std::max(largest, share);
+            // 1e-9: the film is a difference of its integral at two gaps, P ~ 10 apart by
+            // lambda(eps_1) |d eps| ~ 1e-3 here, so it rounds to ~1e-12 relative (the pair
+            // style keeps a margin of 1e-6 below 1).
+            ASSERT_LE(share, bound * (1.0 + 1e-9)) << "gap " << gap << " u_n " << u_n;
+            tested++;
+          }
+        }
+        // The bound is reached (within 1 %) where it is below 1: not a loose bound.
+        if (bound < 1.0) {
+          EXPECT_GT(largest, 0.99 * bound) << "mu " << mu << " grid " << grid;
         }
       }
-      // The bound is reached (within 1 %) where it is below 1: not a loose bound.
-      if (bound < 1.0) {
-        EXPECT_GT(largest, 0.99 * bound) << "mu " << mu;
-      }
-    }
   EXPECT_GT(tested, 0);
-  Coefficients grid;
-  grid.e_dry = 0.9;
-  grid.viscosity = 1e-3;
-  grid.grid_spacing = 1e-4;
-  EXPECT_EQ(film_share_bound(make_normal_model(grid, Partner::particle, dt).lubrication, radius, m_e, dt), 1.0);
+  // A grid that leaves no film (0.75 dx / R <= eps_1): no share.
+  Coefficients none;
+  none.e_dry = 0.9;
+  none.viscosity = 1e-3;
+  none.grid_spacing = 1e-6;
+  EXPECT_EQ(film_share_bound(make_normal_model(none, Partner::particle, dt).lubrication, radius, m_e, dt), 0.0);
 }
 
 // ------------------------------------------------------------------------------------------
