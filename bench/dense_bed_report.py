@@ -7,7 +7,10 @@ against time for the 256-sphere fcc bed with every gap in the film (tools/dense_
 `limit pair` (each film capped alone, the code before) and `limit atom` (the budget, the
 default), at mu_f = 1 Pa s (St = 5.6e-3), dt = 1e-6 s; (right) the St-dt plane, marking for each
 scheme whether the energy stayed non-increasing (within 1e-12 E0) with no atom lost over
-1000 steps.
+1000 steps; (third panel, when LIGGGHTS and its model library are there) LIGGGHTS's wet
+settling bed (examples/liggghts/in.settling_bed at mu_f = 1 Pa s, 2254 beads, gravity, a wet
+floor, friction): ke + erot + m g' z over E0 with `lubricatedLimitPair 1` (each film capped
+alone) and 0 (the budget, the default).
 """
 import argparse
 import pathlib
@@ -17,6 +20,8 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tools"))
 import dense_scenes  # noqa: E402
 import lammps_run  # noqa: E402
+import liggghts_dense_scenes  # noqa: E402
+import liggghts_run  # noqa: E402
 
 import matplotlib  # noqa: E402
 matplotlib.use("Agg")
@@ -41,7 +46,9 @@ def main():
     out = pathlib.Path(args.out)
     work = out / "dense_scratch"
     work.mkdir(parents=True, exist_ok=True)
-    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
+    with_liggghts = not liggghts_run.available()
+    fig, panels = plt.subplots(1, 3 if with_liggghts else 2, figsize=(16.5 if with_liggghts else 11, 4.2))
+    left, right = panels[0], panels[1]
     rows = ["limit,mu_f,St,dt,stable,final_over_E0"]
     for limit, style in (("pair", "r-"), ("atom", "b-")):
         energy, _ = run(work, 1.0, 1e-6, limit)
@@ -62,6 +69,21 @@ def main():
               title="o: energy never rises, no atom lost; x: gains (red: limit pair, blue: limit atom)")
     right.title.set_fontsize(8)
     left.title.set_fontsize(8)
+    liggghts_lines = []
+    if with_liggghts:
+        for limit, style in (("pair", "r-"), ("atom", "b-")):
+            script, variables = liggghts_dense_scenes.settling_bed(8000, limit=limit)
+            _, log = liggghts_run.run(script, work / f"liggghts_{limit}", variables=variables, check=False)
+            energy, atoms = liggghts_dense_scenes.bed_energies(log)
+            panels[2].semilogy([100 * k * 1e-5 * 1e3 for k in range(len(energy))], [e / energy[0] for e in energy],
+                               style, label=f"lubricatedLimitPair {1 if limit == 'pair' else 0}")
+            liggghts_lines.append(f"- LIGGGHTS settling bed, {'each film capped alone' if limit == 'pair' else 'the budget'}: "
+                                  f"largest energy {max(energy) / energy[0]:.3g} E0, final {energy[-1] / energy[0]:.3g} E0, "
+                                  f"atoms {min(atoms)}-{max(atoms)} of 2254")
+        panels[2].set(xlabel="t [ms]", ylabel="(ke + erot + m g' z) / E0",
+                      title="LIGGGHTS wet settling bed, 2254 beads, mu_f = 1 Pa s, dt = 1e-5 s")
+        panels[2].title.set_fontsize(8)
+        panels[2].legend()
     fig.tight_layout()
     fig.savefig(out / "dense_beds.png", dpi=110)
     (out / "dense_beds.csv").write_text("\n".join(rows) + "\n")
@@ -82,7 +104,7 @@ def main():
             "A rise left under limit atom at St ~ 500 and dt = 1e-7 s comes from the contacts, not the",
             "film: the same scene dry rises by 9e-5 E0 too (the spring energy k d^2/2 is sampled with the",
             "nominal k, while the exact contact integrates the pair over the step; with contacts the",
-            "sampled energy is not a Lyapunov function of the step).", ""]
+            "sampled energy is not a Lyapunov function of the step).", ""] + liggghts_lines + ([""] if liggghts_lines else [])
     (out / "dense_beds.md").write_text("\n".join(text))
     print("\n".join(text))
     import shutil

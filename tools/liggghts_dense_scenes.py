@@ -13,6 +13,9 @@ ke + erot and the number of touching pairs (compute contact/atom counts each pai
 no pair touches, the films alone act and that energy may not rise. The LAMMPS rows add the
 spring energy pe. Thermo rows: step atoms ke erot contacts e [pe etotal].
 """
+import pathlib
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
 RHO = 2500.0
 R = 1.0e-3
 SPEED = 0.01
@@ -165,3 +168,22 @@ thermo {every}
 print "RESULT ke ${{e}}"
 """
     return script
+
+
+def settling_bed(steps, limit="atom"):
+    """examples/liggghts/in.settling_bed, wet at mu_f = 1 Pa s (St ~ 0.02 at the impact speeds
+    of the settling), with the energy ke + erot + m g' z (g' the reduced gravity) every 100 steps."""
+    script = (ROOT / "examples" / "liggghts" / "in.settling_bed").read_text()
+    script = script.replace("variable mu      equal 1.0e-3", "variable mu      equal 1.0")
+    script = script.replace("thermo_style    custom step atoms ke c_zmax",
+                            "compute rot all erotate/sphere\nvariable pz atom mass*v_g*z\n"
+                            "compute pg all reduce sum v_pz\nvariable E equal ke+c_rot+c_pg\n"
+                            "thermo_style    custom step atoms ke c_rot c_zmax v_E")
+    script = script.replace("thermo          5000", "thermo          100\nthermo_modify   format float %.17g")
+    return script, {"wet": 1, "steps": steps, "limit": 1 if limit == "pair" else 0}
+
+
+def bed_energies(log):
+    rows = [line.split() for line in log.splitlines()]
+    rows = [r for r in rows if len(r) == 6 and r[0].isdigit() and "by" not in r]
+    return [float(r[5]) for r in rows], [int(r[1]) for r in rows]

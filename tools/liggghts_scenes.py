@@ -136,3 +136,35 @@ variable v2 equal vx[2]
 print "RESULT e ${{e}}"
 print "RESULT v2 ${{v2}}"
 """
+
+
+def rigid_body_hit(e_dry, mu=0.0):
+    """A body of two spheres 2.2 R apart on the x axis (fix rigid single), struck head-on by a
+    third sphere at U (test_frozen_partners.rigid_scene of the LAMMPS tests). RESULT e:
+    separation / approach speed."""
+    half = 0.01
+    return HEADER + f"""boundary p p p
+region box block -{half} {half} -{half} {half} -{half} {half} units box
+create_box 1 box
+neighbor {0.5 * R} bin
+neigh_modify delay 0
+{properties(e_dry, mu, 8).replace("peratomtypepair 2", "peratomtypepair 1").replace(
+        f" {e_dry} {e_dry} {e_dry}", "")}
+pair_style gran model lubricated
+pair_coeff * *
+create_atoms 1 single {-1.1 * R} 0 0 units box
+create_atoms 1 single {1.1 * R} 0 0 units box
+create_atoms 1 single {3.3 * R} 0 0 units box
+set group all diameter {2 * R} density {RHO}
+group mover id 1
+group body id 2 3
+velocity all set 0 0 0 units box
+velocity mover set {U} 0 0 units box
+fix nve mover nve/sphere
+fix body body rigid single
+timestep {0.005 * R / U}
+thermo 300
+run 300
+variable e equal (vx[2]-vx[1])/{U}
+print "RESULT e ${{e}}"
+"""
