@@ -1,4 +1,4 @@
-"""1 and 2 MPI ranks, newton on and off, restarts, and the vectorised and general pair loops
+"""1, 2 and 4 MPI ranks, newton on and off, restarts, and the vectorised and general pair loops
 give the same trajectories.
 
 Relative tolerance 1e-10 (the issue's): the ranks only reorder floating-point sums (and the
@@ -7,6 +7,7 @@ vectorised loops evaluate the logarithm inline, within a few units in the last p
 import re
 import pytest
 
+import dense_scenes
 import scenes
 from scene_chain import chain, dump_state
 
@@ -24,12 +25,15 @@ def collisions_happened(log):
     return ke[-1] < 0.9 * ke[0]
 
 
+@pytest.mark.parametrize("nprocs", [2, 4])
 @pytest.mark.parametrize("newton", ["on", "off"])
-def test_one_and_two_ranks_agree(lmp, newton):
+def test_one_and_more_ranks_agree(lmp, newton, nprocs):
+    """The isolated collisions of the chain (several across rank boundaries), with the film
+    budget and the network check in their default state: the same on 1, 2 and 4 ranks."""
     serial = lmp(chain(newton) + dump_state())
     assert collisions_happened(lmp.log)
-    parallel = lmp(chain(newton) + dump_state(), nprocs=2)
-    assert "2 by 1 by 1 MPI processor grid" in lmp.log
+    parallel = lmp(chain(newton) + dump_state(), nprocs=nprocs, env=dense_scenes.OVERSUBSCRIBED)
+    assert dense_scenes.ranks(lmp.log) == {nprocs}
     assert_same_state(serial, parallel)
 
 

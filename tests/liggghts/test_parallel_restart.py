@@ -1,4 +1,4 @@
-"""mpirun -np 2 agrees with 1 rank, a restart continues the run, and the launcher and the
+"""mpirun -np 2 and -np 4 agree with 1 rank, a restart continues the run, and the launcher and the
 LD_PRELOAD route give the same run. Relative tolerance 1e-10: ranks only reorder sums."""
 import pytest
 
@@ -17,13 +17,14 @@ def collisions_happened(log):
     return len(ke) > 2 and ke[-1] < 0.9 * ke[0]
 
 
+@pytest.mark.parametrize("nprocs", [2, 4])
 @pytest.mark.parametrize("tangential", ["history", "no_history"])
-def test_one_and_two_ranks_agree(run, tangential):
+def test_one_and_more_ranks_agree(run, tangential, nprocs):
     serial = run.lig(chain(tangential=tangential) + dump_state())
     assert collisions_happened(run.log)
-    parallel = run.lig(chain(tangential=tangential, processors="processors 2 1 1") + dump_state(),
-                       nprocs=2)
-    assert "2 by 1 by 1 MPI processor grid" in run.log
+    parallel = run.lig(chain(tangential=tangential, processors=f"processors {nprocs} 1 1") + dump_state(),
+                       nprocs=nprocs)
+    assert f"{nprocs} by 1 by 1 MPI processor grid" in run.log
     assert_same_state(serial, parallel)
 
 
