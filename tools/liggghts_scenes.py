@@ -104,12 +104,21 @@ print "RESULT contact_steps ${{n}}"
 """
 
 
-def frozen_pair(e_dry, mu=0.0, dt_ru=0.005, gap0=0.2137, steps=300, frozen=True):
-    """Atom 1 moving at U along x towards atom 2, held by fix freeze (frozen=True) or free; the
-    contact at x = 0 (the boundary between 2 ranks). RESULT e: separation / approach speed
-    (test_frozen_partners.frozen_pair of the LAMMPS tests, in LIGGGHTS syntax)."""
+HOLDS = {
+    "freeze": "fix nve all nve/sphere\nfix hold base freeze",
+    "unintegrated": "fix nve mover nve/sphere",
+    "move": "fix nve mover nve/sphere\nfix hold base move linear 0 0 0",
+    "free": "fix nve all nve/sphere",
+}
+
+
+def frozen_pair(e_dry, mu=0.0, dt_ru=0.005, gap0=0.2137, steps=300, frozen=True, hold=None):
+    """Atom 1 moving at U along x towards atom 2, held as `hold` (HOLDS; frozen=True: fix
+    freeze, False: free); the contact at x = 0 (the boundary between 2 ranks). RESULT e:
+    separation / approach speed (test_frozen_partners.frozen_pair of the LAMMPS tests, in
+    LIGGGHTS syntax)."""
     half = 0.01
-    hold = "fix hold base freeze" if frozen else ""
+    hold = HOLDS[hold or ("freeze" if frozen else "free")]
     return HEADER + f"""boundary p p p
 region box block -{half} {half} -{half} {half} -{half} {half} units box
 create_box 1 box
@@ -126,7 +135,6 @@ group mover id 1
 group base id 2
 velocity all set 0 0 0 units box
 velocity mover set {U} 0 0 units box
-fix nve all nve/sphere
 {hold}
 timestep {dt_ru * R / U}
 thermo {steps}

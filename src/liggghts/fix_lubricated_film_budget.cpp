@@ -208,7 +208,8 @@ void FixLubricatedFilmBudget::finish_films()
   const int *mask = atom->mask;
   int over = 0;
   for (int i = 0; i < nlocal; i++) {
-    scale_[i] = (mask[i] & frozen_group_bit_) ? 1.0 : film_scale_of_load(load_[i]);
+    const bool held = (mask[i] & hold_bits_) || !(mask[i] & integrate_bits_);
+    scale_[i] = held ? 1.0 : film_scale_of_load(load_[i]);
     over |= scale_[i] < 1.0;
   }
   // Most steps of most beds leave every film whole: then nothing travels and nothing is redone.

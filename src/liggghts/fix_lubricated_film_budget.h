@@ -89,9 +89,13 @@ class FixLubricatedFilmBudget : public LAMMPS_NS::Fix {
     network_.push_back(NetworkContact{i, j, type_pair, {n[0], n[1], n[2]}, m_e, m_i, m_j});
   }
 
-  // Atoms of this group (LIGGGHTS's fix freeze) are moved by no contact: their loads limit
-  // nothing (their partners count their shares of these films).
-  void set_frozen_group_bit(int bit) { frozen_group_bit_ = bit; }
+  // Atoms no contact moves (in no integrated group, or in a held one: fix freeze, fix move):
+  // their loads limit nothing (their partners count their shares of these films).
+  void set_immovable_groups(int integrate_bits, int hold_bits)
+  {
+    integrate_bits_ = integrate_bits;
+    hold_bits_ = hold_bits;
+  }
 
   // Each model lubricated (pair and walls) takes part at every init, before this fix's own
   // init (the pair's model at force init, the walls' in the fix order before this fix); with
@@ -128,7 +132,7 @@ class FixLubricatedFilmBudget : public LAMMPS_NS::Fix {
   bool open_ = false, active_ = false, limit_pair_ = false, films_can_exceed_ = true;
   std::vector<WallFilms> walls_, pending_walls_;
   int participants_ = 0;
-  int newton_pair_ = 0, nlocal_ = 0, frozen_group_bit_ = 0;
+  int newton_pair_ = 0, nlocal_ = 0, integrate_bits_ = ~0, hold_bits_ = 0;
   Exchange exchange_ = Exchange::load;
   std::vector<Record> records_;
   std::vector<double> load_, scale_, correction_;

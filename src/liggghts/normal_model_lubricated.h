@@ -6,8 +6,9 @@
 // Mapping onto LIGGGHTS's contact interface (conventions of src/lubricated/normal_model.h):
 //   en      unit normal from the partner (particle j, or the wall) to particle i;
 //   gap     -deltan (LIGGGHTS's deltan is the overlap), u_n = vn (> 0 separating);
-//   m_e     sidata.meff (reduced mass; the particle mass for a wall), LIGGGHTS's own: a rigid
-//           body's mass, a partner in fix freeze's group immovable; the same near contact;
+//   m_e     the mass the contact moves, in overlap and near it: the reduced mass (a rigid body's
+//           mass for its atoms, as LIGGGHTS's sidata.meff), the mover's mass alone against an
+//           atom left out of every integrator or held by fix freeze or fix move; a wall's meff;
 //   R       lubrication radius: 2 r_i r_j / (r_i + r_j) for a pair, r_i for a wall.
 // The film acts before contact, where LIGGGHTS calls surfacesClose() without a normal: the
 // model derives it from delta, sets has_force_update, and registers a contact distance
@@ -40,6 +41,7 @@ NORMAL_MODEL(LUBRICATED, lubricated, 42)
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -95,6 +97,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
                         "before the run (insert them first, or give lubricatedActivation)");
     neighbor->register_contact_dist_factor(1.0 + reach + lubricated::liggghts::approach_margin);
     warned_ = false;
+    if (!is_wall_) find_immovable_groups();
     join_film_budget(caller);
   }
 
@@ -105,7 +108,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     if (update->dt != dt_) build_models();
     const int t = sidata.itype * (ntypes_ + 1) + sidata.jtype;
     const lubricated::NormalModel &model = models_[t];
-    const double gap = -sidata.deltan, u_n = sidata.vn, m_e = sidata.meff;
+    const double gap = -sidata.deltan, u_n = sidata.vn;
+    const double m_e = is_wall_ ? sidata.meff : pair_reduced_mass(sidata.i, sidata.j);
     const double radius = is_wall_ ? sidata.radi
                                    : lubricated::lubrication_radius_pair(sidata.radi, sidata.radj);
     if (!update->setupflag && gap - u_n * dt_ >= (neighbor->contactDistanceFactor - 1.0) * sidata.radsum)
@@ -178,7 +182,10 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
       if (body_mass[i] > 0.0) m_i = body_mass[i];
       if (body_mass[j] > 0.0) m_j = body_mass[j];
     }
-    const int frozen = pair_->freeze_group_bit(), *mask = atom->mask;
+    const bool held_i = immovable(i), held_j = immovable(j);
+    if (held_j && !held_i) return m_i;
+    if (held_i && !held_j) return m_j;
+    const int frozen = pair_->freeze_group_bit(), *mask = atom->mask;    // LIGGGHTS's own
     if (mask[j] & frozen) return m_i;
     if (mask[i] & frozen) return m_j;
     return lubricated::reduced_mass(m_i, m_j);
@@ -188,7 +195,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // freeze's group (the network check's sums; contact_network.h).
   void contact_masses(const SurfacesCloseData &scdata, double &m_i, double &m_j) const
   {
-    const int i = scdata.i, j = scdata.j, frozen = pair_->freeze_group_bit(), *mask = atom->mask;
+    const int i = scdata.i, j = scdata.j;
     m_i = atom->rmass[i];
     m_j = atom->rmass[j];
     if (pair_->fr_pair()) {
@@ -196,8 +203,28 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
       if (body_mass[i] > 0.0) m_i = body_mass[i];
       if (body_mass[j] > 0.0) m_j = body_mass[j];
     }
-    if (mask[i] & frozen) m_i = INFINITY;
-    if (mask[j] & frozen) m_j = INFINITY;
+    if (immovable(i)) m_i = INFINITY;
+    if (immovable(j)) m_j = INFINITY;
+  }
+
+  // Atoms no contact moves: left out of every time integration, or in the group of fix freeze
+  // or fix move (the LAMMPS plugin's contact masses; fix setforce is not read here).
+  void find_immovable_groups()
+  {
+    integrate_bits_ = hold_bits_ = 0;
+    for (int k = 0; k < modify->nfix; k++) {
+      const LAMMPS_NS::Fix *fix = modify->fix[k];
+      if (std::strcmp(fix->style, "freeze") == 0 || std::strcmp(fix->style, "move") == 0)
+        hold_bits_ |= fix->groupbit;
+      else if (fix->time_integrate)
+        integrate_bits_ |= fix->groupbit;
+    }
+  }
+
+  bool immovable(int i) const
+  {
+    const int mask = atom->mask[i];
+    return (mask & hold_bits_) || !(mask & integrate_bits_);
   }
 
   // The pair's model creates the budget fix (and keeps it after the walls); a wall joins it when
@@ -220,7 +247,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     if (!budget_) return;
     if (!is_wall_) {
       budget_->set_network(ntypes_, normal, bound, coefficients_);
-      budget_->set_frozen_group_bit(pair_->freeze_group_bit());
+      budget_->set_immovable_groups(integrate_bits_, hold_bits_);
     }
     if (!budget_on_) return;
     budget_->take_part(limit_pair == 1.0);
@@ -344,6 +371,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   LAMMPS_NS::PairGran *pair_;
   IContactHistorySetup *hsetup_;    // the pair style or the wall fix
   double bound_dt_ = -1.0;          // the time step of the last share bounds
+  int integrate_bits_ = 0, hold_bits_ = 0;    // group bits: integrated, held (immovable())
   lubricated::liggghts::FixLubricatedFilmBudget *budget_ = nullptr;
   bool budget_on_ = false;
   bool warned_ = false;
