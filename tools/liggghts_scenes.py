@@ -108,6 +108,7 @@ HOLDS = {
     "freeze": "fix nve all nve/sphere\nfix hold base freeze",
     "unintegrated": "fix nve mover nve/sphere",
     "move": "fix nve mover nve/sphere\nfix hold base move linear 0 0 0",
+    "setforce": "fix nve all nve/sphere\nfix hold base setforce 0.0 0.0 0.0",
     "free": "fix nve all nve/sphere",
 }
 

@@ -8,7 +8,8 @@
 //   gap     -deltan (LIGGGHTS's deltan is the overlap), u_n = vn (> 0 separating);
 //   m_e     the mass the contact moves, in overlap and near it: the reduced mass (a rigid body's
 //           mass for its atoms, as LIGGGHTS's sidata.meff), the mover's mass alone against an
-//           atom left out of every integrator or held by fix freeze or fix move; a wall's meff;
+//           atom left out of every integrator or held by fix freeze, fix move or
+//           fix setforce 0 0 0; a wall's meff;
 //   R       lubrication radius: 2 r_i r_j / (r_i + r_j) for a pair, r_i for a wall.
 // The film acts before contact, where LIGGGHTS calls surfacesClose() without a normal: the
 // model derives it from delta, sets has_force_update, and registers a contact distance
@@ -35,6 +36,7 @@ NORMAL_MODEL(LUBRICATED, lubricated, 42)
 
 #include "liggghts/fix_lubricated_film_budget.h"
 #include "liggghts/lubricated_properties.h"
+#include "liggghts/setforce_holds.h"
 #include "lubricated/contact_network.h"
 #include "lubricated/film_budget.h"
 #include "lubricated/normal_model.h"
@@ -207,14 +209,15 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     if (immovable(j)) m_j = INFINITY;
   }
 
-  // Atoms no contact moves: left out of every time integration, or in the group of fix freeze
-  // or fix move (the LAMMPS plugin's contact masses; fix setforce is not read here).
+  // Atoms no contact moves: left out of every time integration, or in the group of fix freeze,
+  // fix move or fix setforce 0 0 0 without a region (the LAMMPS plugin's contact masses).
   void find_immovable_groups()
   {
     integrate_bits_ = hold_bits_ = 0;
     for (int k = 0; k < modify->nfix; k++) {
       const LAMMPS_NS::Fix *fix = modify->fix[k];
-      if (std::strcmp(fix->style, "freeze") == 0 || std::strcmp(fix->style, "move") == 0)
+      if (std::strcmp(fix->style, "freeze") == 0 || std::strcmp(fix->style, "move") == 0 ||
+          (std::strcmp(fix->style, "setforce") == 0 && lubricated::liggghts::setforce_holds(modify->fix[k])))
         hold_bits_ |= fix->groupbit;
       else if (fix->time_integrate)
         integrate_bits_ |= fix->groupbit;

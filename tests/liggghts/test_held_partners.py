@@ -13,11 +13,11 @@ import scenes
 
 
 @pytest.mark.parametrize("nprocs", [1, 2])
-@pytest.mark.parametrize("hold", ["unintegrated", "move"])
+@pytest.mark.parametrize("hold", ["unintegrated", "move", "setforce"])
 @pytest.mark.parametrize("e_dry", [1.0, 0.9, 0.5])
 def test_partner_no_integrator_moves_rebounds_with_e_dry(run, e_dry, hold, nprocs):
-    """A partner left out of fix nve/sphere or moved by fix move (at rest) is immovable too, as
-    in the LAMMPS plugin (LIGGGHTS's own models keep the reduced mass there; with it, measured
+    """A partner left out of fix nve/sphere, moved by fix move (at rest) or held by fix setforce
+    0 0 0 is immovable too, as in the LAMMPS plugin (LIGGGHTS's own models keep the reduced mass there; with it, measured
     before: e = 1.0002, 0.928 and 0.621 at e_d = 1, 0.9 and 0.5, above e_d)."""
     result = run.lig(liggghts_scenes.frozen_pair(e_dry, hold=hold), nprocs=nprocs)
     assert result["e"] == pytest.approx(e_dry, rel=1e-9)
@@ -55,3 +55,15 @@ def test_rigid_body_takes_its_mass(run, e_dry, nprocs):
     """A sphere against a body of two spheres (fix rigid single): m_e = m 2m / 3m, e = e_d
     (measured 1e-13)."""
     assert run.lig(liggghts_scenes.rigid_body_hit(e_dry), nprocs=nprocs)["e"] == pytest.approx(e_dry, rel=1e-9)
+
+
+@pytest.mark.parametrize("force", ["NULL 0.0 0.0", "0.0 0.0 0.0 region far"])
+def test_only_setforce_all_zero_holds(run, force):
+    """With a NULL component or a region the fix may let the atom move, and here it does (x is
+    free, the region is elsewhere): the free pair's e_d, the partner pushed."""
+    script = liggghts_scenes.frozen_pair(0.9, hold="setforce").replace(
+        "setforce 0.0 0.0 0.0", f"setforce {force}").replace(
+        "group base id 2", f"group base id 2\nregion far block 0 {scenes.R} {4 * scenes.R} {5 * scenes.R} 0 "
+                           f"{scenes.R} units box")
+    result = run.lig(script)
+    assert result["e"] == pytest.approx(0.9, rel=1e-9) and result["v2"] > 0.0
