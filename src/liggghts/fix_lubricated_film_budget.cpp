@@ -11,6 +11,7 @@
 #include "liggghts/lubricated_properties.h"
 #include "lubricated/contact_network.h"
 #include "lubricated/contact_network_message.h"
+#include "lubricated/contact_network_ranks.h"
 #include "lubricated/film_budget.h"
 
 #include <algorithm>
@@ -297,61 +298,31 @@ void FixLubricatedFilmBudget::check_network()
   if (newton_pair_) comm->reverse_comm_fix(this);
   comm->forward_comm_fix(this);
 
-  struct {
-    double value;
-    int rank;
-  } lower{0.0, comm->me}, upper{0.0, comm->me}, reduced;
-  int worst_lower = -1, worst_upper = -1;
-  double unit_upper = 0.0;
+  // Each contact's bounds; the worst over all ranks decides (contact_network_ranks.h).
+  NetworkScores scores(comm->me);
   for (size_t k = 0; k < network_.size(); k++) {
     const NetworkContact &c = network_[k];
     const double *si = &network_sums_[nv * c.i], *sj = &network_sums_[nv * c.j];
     const double bound = network_bound_[c.type_pair];
-    const double row = network_upper_row(bound, c.m_e, si, c.m_i, sj, c.m_j);
-    const double quotient = network_lower_quotient(network_load_[c.type_pair], c.m_e, c.n, si, c.m_i, sj, c.m_j);
-    if (quotient > lower.value) lower.value = quotient, worst_lower = static_cast<int>(k);
-    if (row > upper.value) upper.value = row, worst_upper = static_cast<int>(k);
-    unit_upper = std::max(unit_upper, row / bound);
+    scores.add(static_cast<int>(k),
+               network_lower_quotient(network_load_[c.type_pair], c.m_e, c.n, si, c.m_i, sj, c.m_j),
+               network_upper_row(bound, c.m_e, si, c.m_i, sj, c.m_j), bound);
   }
-  MPI_Allreduce(&lower, &reduced, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
-  const bool unstable = reduced.value >= stable_network_load;
-  if (!unstable) {
-    if (network_warned_ || reduced.value < likely_unstable_network_load) return;
-    MPI_Allreduce(&upper, &reduced, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
-    if (reduced.value < stable_network_load) return;
-    network_warned_ = true;
-  }
-  // What the owner of the worst contact knows, for every rank's message.
-  double info[7] = {0.0};
-  const int worst = unstable ? worst_lower : worst_upper;
-  if (comm->me == reduced.rank && worst >= 0) {
-    const NetworkContact &c = network_[worst];
-    const int *type = atom->type, *tag = atom->tag;
-    info[0] = reduced.value;
-    info[1] = std::min(type[c.i], type[c.j]);
-    info[2] = std::max(type[c.i], type[c.j]);
-    info[3] = tag[c.i];
-    info[4] = tag[c.j];
-    info[5] = network_sums_[nv * c.i + nv - 1];
-    info[6] = network_sums_[nv * c.j + nv - 1];
-  }
-  MPI_Bcast(info, 7, MPI_DOUBLE, reduced.rank, world);
   NetworkFinding found;
-  found.unstable = unstable;
-  found.load = info[0];
-  found.type_i = static_cast<int>(info[1]);
-  found.type_j = static_cast<int>(info[2]);
-  found.tag_i = static_cast<long long>(info[3]);
-  found.tag_j = static_cast<long long>(info[4]);
-  found.contacts_i = info[5];
-  found.contacts_j = info[6];
-  MPI_Allreduce(&unit_upper, &found.largest_unit_upper, 1, MPI_DOUBLE, MPI_MAX, world);
-  MPI_Allreduce(&lower.value, &found.largest_lower, 1, MPI_DOUBLE, MPI_MAX, world);
+  auto describe = [&](int k, int *types, long long *tags, double *contacts) {
+    const int ij[2] = {network_[k].i, network_[k].j};
+    for (int s = 0; s < 2; s++) {
+      types[s] = atom->type[ij[s]];
+      tags[s] = atom->tag[ij[s]];
+      contacts[s] = network_sums_[nv * ij[s] + nv - 1];
+    }
+  };
+  if (!scores.decide(world, network_warned_, describe, found)) return;
   // LIGGGHTS's Error keeps a pointer to the text: it must outlive this call.
   static std::string message;
   message = with_property_names(network_message(
       "model lubricated", coefficients_[found.type_i * (ntypes_ + 1) + found.type_j], update->dt, found));
-  if (unstable) error->all(FLERR, message.c_str());
+  if (found.unstable) error->all(FLERR, message.c_str());
   if (comm->me == 0) error->warning(FLERR, message.c_str());
 }
 

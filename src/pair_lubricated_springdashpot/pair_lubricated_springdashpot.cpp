@@ -10,6 +10,7 @@
 #include "fix_wall_lubrication/fix_wall_lubrication.h"
 #include "lubricated/contact_network.h"
 #include "lubricated/contact_network_message.h"
+#include "lubricated/contact_network_ranks.h"
 #include "lubricated/film_budget.h"
 
 #include "atom.h"
@@ -623,14 +624,8 @@ void PairLubricatedSpringDashpot::check_contact_network(int ncandidate)
   if (newton_pair) comm->reverse_comm(this);
   comm->forward_comm(this);
 
-  // The largest lower quotient and upper row, and the largest upper row per unit load (for the
-  // advice), with the contact where each is reached.
-  struct {
-    double value;
-    int rank;
-  } lower{0.0, comm->me}, upper{0.0, comm->me}, reduced;
-  int worst_lower = -1, worst_upper = -1;
-  double unit_upper = 0.0;
+  // Each contact's bounds; the worst over all ranks decides (contact_network_ranks.h).
+  lub::NetworkScores scores(comm->me);
   for (std::size_t k = 0; k < network_i.size(); k++) {
     const int i = network_i[k], j = network_j[k], t = index(type[i], type[j]);
     double n[3];
@@ -638,48 +633,22 @@ void PairLubricatedSpringDashpot::check_contact_network(int ncandidate)
     for (int d = 0; d < 3; d++) n[d] /= r;
     const double m_e = pair_mass(i, j);
     const double *si = &network_sums[nv * i], *sj = &network_sums[nv * j];
-    const double row = lub::network_upper_row(network_bound[t], m_e, si, mass(i), sj, mass(j));
-    const double quotient = lub::network_lower_quotient(network_load[t], m_e, n, si, mass(i), sj, mass(j));
-    if (quotient > lower.value) lower.value = quotient, worst_lower = static_cast<int>(k);
-    if (row > upper.value) upper.value = row, worst_upper = static_cast<int>(k);
-    unit_upper = std::max(unit_upper, row / network_bound[t]);
+    scores.add(static_cast<int>(k), lub::network_lower_quotient(network_load[t], m_e, n, si, mass(i), sj, mass(j)),
+               lub::network_upper_row(network_bound[t], m_e, si, mass(i), sj, mass(j)), network_bound[t]);
   }
-  MPI_Allreduce(&lower, &reduced, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
-  const bool unstable = reduced.value >= lub::stable_network_load;
-  if (!unstable) {
-    if (network_warned || reduced.value < lub::likely_unstable_network_load) return;
-    MPI_Allreduce(&upper, &reduced, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
-    if (reduced.value < lub::stable_network_load) return;
-    network_warned = true;
-  }
-  // What the owner of the worst contact knows, for every rank's message.
-  double info[7] = {0.0};
-  const int worst = unstable ? worst_lower : worst_upper;
-  if (comm->me == reduced.rank && worst >= 0) {
-    const int i = network_i[worst], j = network_j[worst];
-    info[0] = reduced.value;
-    info[1] = std::min(type[i], type[j]);
-    info[2] = std::max(type[i], type[j]);
-    info[3] = static_cast<double>(atom->tag[i]);
-    info[4] = static_cast<double>(atom->tag[j]);
-    info[5] = network_sums[nv * i + nv - 1];
-    info[6] = network_sums[nv * j + nv - 1];
-  }
-  MPI_Bcast(info, 7, MPI_DOUBLE, reduced.rank, world);
   lub::NetworkFinding found;
-  found.unstable = unstable;
-  found.load = info[0];
-  found.type_i = static_cast<int>(info[1]);
-  found.type_j = static_cast<int>(info[2]);
-  found.tag_i = static_cast<long long>(info[3]);
-  found.tag_j = static_cast<long long>(info[4]);
-  found.contacts_i = info[5];
-  found.contacts_j = info[6];
-  MPI_Allreduce(&unit_upper, &found.largest_unit_upper, 1, MPI_DOUBLE, MPI_MAX, world);
-  MPI_Allreduce(&lower.value, &found.largest_lower, 1, MPI_DOUBLE, MPI_MAX, world);
+  auto describe = [&](int k, int *types, long long *tags, double *contacts) {
+    const int ij[2] = {network_i[k], network_j[k]};
+    for (int s = 0; s < 2; s++) {
+      types[s] = type[ij[s]];
+      tags[s] = static_cast<long long>(atom->tag[ij[s]]);
+      contacts[s] = network_sums[nv * ij[s] + nv - 1];
+    }
+  };
+  if (!scores.decide(world, network_warned, describe, found)) return;
   const std::string message =
       lub::network_message(STYLE, coeffs[index(found.type_i, found.type_j)], update->dt, found);
-  if (unstable) error->all(FLERR, message);
+  if (found.unstable) error->all(FLERR, message);
   if (comm->me == 0) error->warning(FLERR, message);
 }
 
