@@ -1,0 +1,290 @@
+/* ----------------------------------------------------------------------
+   pair_style lubricated/springdashpot: the many-body parts of a dense bed, the film budget
+   (lubricated/film_budget.h) and the contact-network check (lubricated/contact_network.h)
+------------------------------------------------------------------------- */
+
+#include "pair_lubricated_springdashpot.h"
+#include "vector_pairs.h"
+
+#include "fix_contact_history/fix_contact_history.h"
+#include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
+#include "fix_wall_lubrication/fix_wall_lubrication.h"
+#include "lubricated/contact_network.h"
+#include "lubricated/contact_network_message.h"
+#include "lubricated/contact_network_ranks.h"
+#include "lubricated/film_budget.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "update.h"
+#include "utils.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+
+using namespace LAMMPS_NS;
+namespace lub = lubricated;
+
+static constexpr const char *STYLE = "Pair style lubricated/springdashpot";
+
+// Until the next neighbor list build a pair closes by at most the skin, so only the pairs of the
+// list whose gap is below the film's reach plus the skin can have a film. Each atom's sum of
+// those contacts' share bounds (and its wet walls') bounds its load: where no sum exceeds 1
+// the budget would scale nothing and is skipped until the next build (or a new time step).
+// The bounds use the spheres' own masses, which no contact mass exceeds (contact_mass.h).
+bool PairLubricatedSpringDashpot::films_can_exceed_budget()
+{
+  double **x = atom->x;
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost, newton_pair = force->newton_pair;
+  const double dt = update->dt, skin = neighbor->skin;
+  film_bound_dt = dt;
+  if (static_cast<int>(load_of_atom.size()) < nall) {
+    load_of_atom.resize(atom->nmax);
+    scale_of_atom.resize(atom->nmax);
+  }
+  // The shear film's share has no such bound yet: with it the budget always runs.
+  for (const auto &tm : tmodels)
+    if (tm.film_active()) return true;
+  double *bound = load_of_atom.data();
+  std::fill(bound, bound + nall, 0.0);
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const lub::Lubrication &film = models[index(type[i], type[j])].lubrication;
+      if (!film.active()) continue;
+      const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+      const lub::FilmRadius radius_ij = lub::film_radius_pair(radius[i], radius[j]);
+      const double reach = radius[i] + radius[j] + film.reach(radius_ij.value) + skin;
+      if (delx * delx + dely * dely + delz * delz >= reach * reach) continue;
+      const double b =
+          lub::film_share_bound(film, radius_ij.value, lub::reduced_mass(rmass[i], rmass[j]), dt);
+      bound[i] += b;
+      if (newton_pair || j < nlocal) bound[j] += b;
+    }
+  }
+  for (auto wall : walls) wall->add_film_share_bounds(bound, nlocal);
+  if (newton_pair) {
+    comm_what = COMM_LOAD;
+    comm->reverse_comm(this);
+  }
+  // A margin for the rounding of the film's integral (film_budget.h, ~1e-12 relative).
+  constexpr double below_one = 1.0 - 1e-6;
+  int over = 0;
+  for (int i = 0; i < nlocal; i++) over |= bound[i] > below_one;
+  int any_over = 0;
+  MPI_Allreduce(&over, &any_over, 1, MPI_INT, MPI_MAX, world);
+  return any_over != 0;
+}
+
+// Owned atoms' inverse contact masses, then the ghosts' (a rigid body's mass is known to the
+// owner of the atom only). Atoms change rank and index only when the lists are rebuilt.
+void PairLubricatedSpringDashpot::update_inverse_mass()
+{
+  if (static_cast<int>(inverse_mass.size()) < atom->nlocal + atom->nghost) inverse_mass.resize(atom->nmax);
+  contact_mass.fill(inverse_mass.data());
+  comm_what = COMM_MASS;
+  comm->forward_comm(this);
+}
+
+// Loads start from the walls' films (computed in their pre_force) for owned atoms, 0 elsewhere.
+void PairLubricatedSpringDashpot::begin_film_budget()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  if (static_cast<int>(load_of_atom.size()) < nall) {
+    load_of_atom.resize(atom->nmax);
+    scale_of_atom.resize(atom->nmax);
+  }
+  std::fill(load_of_atom.begin(), load_of_atom.begin() + nall, 0.0);
+  for (auto wall : walls) wall->add_film_loads(load_of_atom.data(), nlocal);
+  nrecord = 0;
+}
+
+void PairLubricatedSpringDashpot::reserve_records(int more)
+{
+  if (nrecord + more <= static_cast<int>(record_i.size()) &&
+      (!shear_records || record_shear.size() >= 3 * record_i.size()))
+    return;
+  const int size = 2 * (nrecord + more);
+  record_i.resize(size);
+  record_j.resize(size);
+  record_force.resize(size);
+  if (shear_records) record_shear.resize(3 * size);
+}
+
+// Loads summed on the owners, scales sent to the ghosts, then every film whose atoms are over
+// budget is scaled down by 1 / max(1, D_i, D_j) (lubricated/film_budget.h).
+void PairLubricatedSpringDashpot::finish_film_budget()
+{
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  if (newton_pair) {
+    comm_what = COMM_LOAD;
+    comm->reverse_comm(this);
+  }
+  double *load = load_of_atom.data(), *scale = scale_of_atom.data();
+  // An atom no contact moves is not part of the state the budget protects: its load limits
+  // nothing (its partners' own loads count their shares of these films).
+  const double *held = inverse_mass_on ? inverse_mass.data() : nullptr;
+  int over = 0;
+  for (int i = 0; i < nlocal; i++) {
+    scale[i] = (held && held[i] == 0.0) ? 1.0 : lub::film_scale_of_load(load[i]);
+    over |= scale[i] < 1.0;
+  }
+  // Most steps of most beds leave every film whole: then no scales travel and nothing is redone.
+  int any_over = 0;
+  MPI_Allreduce(&over, &any_over, 1, MPI_INT, MPI_MAX, world);
+  if (!any_over) return;
+  comm_what = COMM_SCALE;
+  comm->forward_comm(this);
+  double **x = atom->x, **f = atom->f;
+  if (shear_records) {
+    finish_shear_film_budget();
+    return;
+  }
+  for (int r = 0; r < nrecord; r++) {
+    const int i = record_i[r], j = record_j[r];
+    const double s = std::min(scale[i], scale[j]);
+    if (s == 1.0) continue;
+    const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+    const double fpair = (s - 1.0) * record_force[r] / std::sqrt(delx * delx + dely * dely + delz * delz);
+    f[i][0] += delx * fpair;
+    f[i][1] += dely * fpair;
+    f[i][2] += delz * fpair;
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= delx * fpair;
+      f[j][1] -= dely * fpair;
+      f[j][2] -= delz * fpair;
+    }
+    if (evflag) ev_tally(i, j, nlocal, newton_pair, 0.0, 0.0, fpair, delx, dely, delz);
+  }
+}
+
+// The correction pass with shear films: per record, (s - 1) times the normal film along n and the
+// shear film at the contact points, with its torques -R_i n x f and -R_j n x f (tangential.h).
+void PairLubricatedSpringDashpot::finish_shear_film_budget()
+{
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const double *scale = scale_of_atom.data(), *radius = atom->radius;
+  double **x = atom->x, **f = atom->f, **torque = atom->torque;
+  for (int r = 0; r < nrecord; r++) {
+    const int i = record_i[r], j = record_j[r];
+    const double s = std::min(scale[i], scale[j]);
+    if (s == 1.0) continue;
+    const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+    const double rinv = 1.0 / std::sqrt(delx * delx + dely * dely + delz * delz);
+    const double fpair = (s - 1.0) * record_force[r] * rinv;
+    const double *shear = &record_shear[3 * r];
+    const lub::Vec3 df{(s - 1.0) * shear[0], (s - 1.0) * shear[1], (s - 1.0) * shear[2]};
+    const lub::Vec3 nxf = lub::cross(lub::Vec3{delx * rinv, dely * rinv, delz * rinv}, df);
+    const double fx = delx * fpair + df.x, fy = dely * fpair + df.y, fz = delz * fpair + df.z;
+    const double radi = radius[i], radj = radius[j];
+    f[i][0] += fx;
+    f[i][1] += fy;
+    f[i][2] += fz;
+    torque[i][0] -= radi * nxf.x;
+    torque[i][1] -= radi * nxf.y;
+    torque[i][2] -= radi * nxf.z;
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= fx;
+      f[j][1] -= fy;
+      f[j][2] -= fz;
+      torque[j][0] -= radj * nxf.x;
+      torque[j][1] -= radj * nxf.y;
+      torque[j][2] -= radj * nxf.z;
+    }
+    if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+  }
+}
+
+// The network of contacts (lubricated/contact_network.h): per-atom sums over the contacts in
+// overlap now and a step ago among the pairs pass 1 kept, then each contact's lower quotient and
+// upper row. A lower quotient of 4 or more proves a mode that grows every step: ERROR. Where the
+// upper row reaches 4 (stability unproven) and the lower quotient 8/3 (growth likely): WARNING,
+// once per run.
+void PairLubricatedSpringDashpot::check_contact_network(int ncandidate)
+{
+  constexpr int nv = lub::network_values;
+  double **x = atom->x, **v = atom->v;
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost, newton_pair = force->newton_pair;
+  const double dt = update->dt;
+  if (static_cast<int>(network_sums.size()) < nv * nall) network_sums.resize(nv * atom->nmax);
+  std::fill(network_sums.begin(), network_sums.begin() + nv * nall, 0.0);
+  network_i.clear();
+  network_j.clear();
+  auto normal = [&](int i, int j, double *n) {
+    for (int d = 0; d < 3; d++) n[d] = x[i][d] - x[j][d];
+    return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  };
+  // The masses the contacts move (contact_mass.h): an immovable atom is not part of the state,
+  // its infinite mass drops its terms from the sums and quotients.
+  const double *inverse = inverse_mass_on ? inverse_mass.data() : nullptr;
+  auto mass = [&](int i) { return inverse ? (inverse[i] > 0.0 ? 1.0 / inverse[i] : INFINITY) : rmass[i]; };
+  auto pair_mass = [&](int i, int j) {
+    return inverse ? lub::reduced_mass_of_inverses(inverse[i], inverse[j]) : lub::reduced_mass(rmass[i], rmass[j]);
+  };
+  for (int c = 0; c < ncandidate; c++) {
+    const int i = candidate_i[c], j = candidate_j[c];
+    double n[3];
+    const double r = normal(i, j, n), gap = r - radius[i] - radius[j];
+    if (!(gap < 0.0) || r == 0.0) continue;
+    const double *vi = midpoint ? midpoint->step_velocity(i) : v[i];
+    const double *vj = midpoint ? midpoint->step_velocity(j) : v[j];
+    for (int d = 0; d < 3; d++) n[d] /= r;
+    const double u_n = (vi[0] - vj[0]) * n[0] + (vi[1] - vj[1]) * n[1] + (vi[2] - vj[2]) * n[2];
+    if (!(gap - u_n * dt < 0.0)) continue;    // in overlap a step ago too
+    const int t = index(type[i], type[j]);
+    const double m_e = pair_mass(i, j);
+    if (m_e == 0.0) continue;    // two immovable atoms
+    lub::add_network_contact(&network_sums[nv * i], network_load[t], network_bound[t], m_e, n);
+    if (newton_pair || j < nlocal)
+      lub::add_network_contact(&network_sums[nv * j], network_load[t], network_bound[t], m_e, n);
+    network_i.push_back(i);
+    network_j.push_back(j);
+  }
+  comm_what = COMM_NETWORK;
+  if (newton_pair) comm->reverse_comm(this);
+  comm->forward_comm(this);
+
+  // Each contact's bounds; the worst over all ranks decides (contact_network_ranks.h).
+  lub::NetworkScores scores(comm->me);
+  for (std::size_t k = 0; k < network_i.size(); k++) {
+    const int i = network_i[k], j = network_j[k], t = index(type[i], type[j]);
+    double n[3];
+    const double r = normal(i, j, n);
+    for (int d = 0; d < 3; d++) n[d] /= r;
+    const double m_e = pair_mass(i, j);
+    const double *si = &network_sums[nv * i], *sj = &network_sums[nv * j];
+    scores.add(static_cast<int>(k), lub::network_lower_quotient(network_load[t], m_e, n, si, mass(i), sj, mass(j)),
+               lub::network_upper_row(network_bound[t], m_e, si, mass(i), sj, mass(j)), network_bound[t]);
+  }
+  lub::NetworkFinding found;
+  auto describe = [&](int k, int *types, long long *tags, double *contacts) {
+    const int ij[2] = {network_i[k], network_j[k]};
+    for (int s = 0; s < 2; s++) {
+      types[s] = type[ij[s]];
+      tags[s] = static_cast<long long>(atom->tag[ij[s]]);
+      contacts[s] = network_sums[nv * ij[s] + nv - 1];
+    }
+  };
+  if (!scores.decide(world, network_warned, describe, found)) return;
+  const std::string message =
+      lub::network_message(STYLE, coeffs[index(found.type_i, found.type_j)], update->dt, found);
+  if (found.unstable) error->all(FLERR, message);
+  if (comm->me == 0) error->warning(FLERR, message);
+}

@@ -1,0 +1,409 @@
+/* ----------------------------------------------------------------------
+   pair_style lubricated/springdashpot: the pair loops (eval and its vectorised passes) and
+   one contact's tangential force
+------------------------------------------------------------------------- */
+
+#include "pair_lubricated_springdashpot.h"
+#include "vector_pairs.h"
+
+#include "fix_contact_history/fix_contact_history.h"
+#include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
+#include "fix_wall_lubrication/fix_wall_lubrication.h"
+#include "lubricated/contact_network.h"
+#include "lubricated/contact_network_message.h"
+#include "lubricated/contact_network_ranks.h"
+#include "lubricated/film_budget.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "update.h"
+#include "utils.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+
+using namespace LAMMPS_NS;
+namespace lub = lubricated;
+
+// Tangential force ft on i (on j: -ft) and the torques ti, tj of one pair (tangential.h);
+// dv = v_i - v_j as used for u_n.
+inline void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const double *del,
+                                                    const double *dv_ij, double rinv, double gap,
+                                                    double u_n, double lub_radius, double m_e,
+                                                    double normal_force, double *ft, double *ti,
+                                                    double *tj, double kick_time, double *shear)
+{
+  const lub::TangentialModel &tm = tmodels[index(atom->type[i], atom->type[j])];
+  const double radi = atom->radius[i], radj = atom->radius[j];
+  double **omega = atom->omega;
+  const lub::Vec3 n{del[0] * rinv, del[1] * rinv, del[2] * rinv};
+  const lub::Vec3 dv{dv_ij[0], dv_ij[1], dv_ij[2]};
+  const lub::Vec3 wi{omega[i][0], omega[i][1], omega[i][2]};
+  const lub::Vec3 wj{omega[j][0], omega[j][1], omega[j][2]};
+  const lub::Vec3 s =
+      lub::tangential_part(lub::minus(dv, lub::cross(lub::plus(lub::scaled(wi, radi),
+                                                               lub::scaled(wj, radj)), n)), n);
+  const double m_t = lub::tangential_mass_ratio * m_e;
+
+  lub::Vec3 f;
+  if (history) {
+    char &touched = history->touched(i)[jj];
+    double *h = history->values(i) + 3 * jj;
+    if (tm.contact_active() && lub::tangential_in_contact(gap)) {
+      const double fraction = touched ? 1.0 : lub::first_contact_fraction(gap, u_n, tm.dt);
+      lub::Vec3 delta{h[0], h[1], h[2]};
+      f = lub::tangential_contact_force(tm, delta, n, s, m_t, normal_force, fraction);
+      h[0] = delta.x, h[1] = delta.y, h[2] = delta.z;
+      touched = 1;
+    } else if (touched) {
+      touched = 0;
+      h[0] = h[1] = h[2] = 0.0;
+    }
+  }
+  if (tm.film_active()) {
+    const lub::Lubrication &film = models[index(atom->type[i], atom->type[j])].lubrication;
+    const double eps = gap / lub_radius;
+    const lub::Vec3 fs = lub::shear_film_force(tm, s, eps, film.activation_for(lub_radius),
+                                               film.eps_saturation, film.eps_release,
+                                               radi * radj / (radi + radj), m_t);
+    f = lub::plus(f, fs);
+    if (shear) {
+      shear[0] = fs.x, shear[1] = fs.y, shear[2] = fs.z;
+      shear[3] = lub::shear_film_share(lub::dot(fs, fs), lub::dot(s, s), m_t, kick_time);
+    }
+  }
+  lub::Vec3 roll;
+  if (tm.rolling_active() && gap < 0.0) {
+    // The spheres' own inertia (also in a rigid body); against an immovable atom the other's.
+    const double inertia_i = 0.4 * atom->rmass[i] * radi * radi;
+    const double inertia_j = 0.4 * atom->rmass[j] * radj * radj;
+    double inertia = inertia_i * inertia_j / (inertia_i + inertia_j);
+    if (inverse_mass_on && inverse_mass[i] == 0.0) inertia = inertia_j;
+    if (inverse_mass_on && inverse_mass[j] == 0.0) inertia = inertia_i;
+    roll = lub::rolling_torque(tm, n, lub::minus(wi, wj), radi * radj / (radi + radj), inertia, normal_force);
+  }
+  const lub::Vec3 nxf = lub::cross(n, f);
+  ft[0] = f.x, ft[1] = f.y, ft[2] = f.z;
+  ti[0] = -radi * nxf.x + roll.x, ti[1] = -radi * nxf.y + roll.y, ti[2] = -radi * nxf.z + roll.z;
+  tj[0] = -radj * nxf.x - roll.x, tj[1] = -radj * nxf.y - roll.y, tj[2] = -radj * nxf.z - roll.z;
+}
+
+// A pair outside distance `outer` (squared: outer_sq) comes within it during the coming step
+// at most if gap < reach + |u_n| dt, i.e. rsq - |dv.del| dt < outer r, tested without a sqrt.
+static inline bool within_a_step(double rsq, double dv_dot_del, double dt, double outer_sq)
+{
+  const double s = rsq - std::fabs(dv_dot_del) * dt;
+  return (s <= 0.0) | (s * s < outer_sq * rsq);
+}
+
+// The vectorised loops (vector_pairs.h) over the film-only list and the kept entries, in
+// chunks that stay in the cache between computing and applying the forces; kept entries
+// where a contact starts or ends go through the general loop, evaluate(i, j, jj). Unless one
+// model serves every pair, each chunk is first grouped by type pair (a counting sort).
+template <class Evaluate>
+void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evaluate &evaluate)
+{
+  if (ncandidate + nfilm == 0) return;
+  double **x = atom->x, **f = atom->f;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+  const vector_pairs::Atoms atoms{x[0], atom->v[0], atom->radius, atom->rmass,
+                                  inverse_mass_on ? inverse_mass.data() : nullptr};
+  constexpr int chunk = 256;
+  double fpair[chunk], energy[chunk], film[chunk], capacity[chunk];
+  int done[chunk], rest[chunk];
+  const bool budget = film_budget_now;
+  auto apply = [&](int i, int j, double fij, double eij) {
+    const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+    f[i][0] += delx * fij;
+    f[i][1] += dely * fij;
+    f[i][2] += delz * fij;
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= delx * fij;
+      f[j][1] -= dely * fij;
+      f[j][2] -= delz * fij;
+    }
+    if (evflag) ev_tally(i, j, nlocal, newton_pair, eij, 0.0, fij, delx, dely, delz);
+  };
+  // The loops' films enter the budget (their kick is a step: the loops run in steps only): the
+  // shares in a loop of their own (vectorised), the rest with the forces' scatter.
+  const double dt = update->dt;
+  auto record_films = [&](const int *pair_i, const int *pair_j, int n) {
+    for (int c = 0; c < n; c++) capacity[c] = lub::film_share_of_capacity(film[c], capacity[c], dt);
+    for (int c = 0; c < n; c++) record_film(pair_i[c], pair_j[c], film[c], capacity[c], nlocal, newton_pair);
+  };
+  // At most one chunk of pairs of one model.
+  auto film_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
+    if (atoms.inverse_mass) vector_pairs::film_only_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+    else vector_pairs::film_only(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+    for (int c = 0; c < n; c++) apply(pair_i[c], pair_j[c], fpair[c], 0.0);
+    if (budget) record_films(pair_i, pair_j, n);
+  };
+  auto kept_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
+    if (atoms.inverse_mass)
+      vector_pairs::contact_or_film_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+    else
+      vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+    int nrest = 0;
+    for (int c = 0; c < n; c++) {
+      // Branch-free (which pairs are done follows no pattern): the others have fpair = 0 (and
+      // no film) here and are listed for the general loop.
+      apply(pair_i[c], pair_j[c], fpair[c], energy[c]);
+      rest[nrest] = c;
+      nrest += !done[c];
+    }
+    if (budget && model.lubrication.active()) record_films(pair_i, pair_j, n);
+    for (int k = 0; k < nrest; k++) evaluate(pair_i[rest[k]], pair_j[rest[k]], 0);
+  };
+  // A list in chunks, each grouped by type pair (a counting sort within the chunk, which
+  // keeps the atoms' data in the cache) unless one model serves all.
+  int key[chunk], grouped_i[chunk], grouped_j[chunk];
+  group_count.resize(models.size(), 0);    // all zero between chunks
+  auto run_list = [&](const int *list_i, const int *list_j, int count, auto &pairs) {
+    for (int start = 0; start < count; start += chunk) {
+      const int n = std::min(chunk, count - start);
+      const int *pair_i = list_i + start, *pair_j = list_j + start;
+      if (uniform_models) {
+        pairs(models[index(1, 1)], pair_i, pair_j, n);
+        continue;
+      }
+      group_keys.clear();
+      for (int c = 0; c < n; c++) {
+        key[c] = index(type[pair_i[c]], type[pair_j[c]]);
+        if (group_count[key[c]]++ == 0) group_keys.push_back(key[c]);
+      }
+      int begin = 0;
+      for (int k : group_keys) {    // group_count becomes each group's next free slot
+        const int size = group_count[k];
+        group_count[k] = begin;
+        begin += size;
+      }
+      for (int c = 0; c < n; c++) {
+        const int at = group_count[key[c]]++;
+        grouped_i[at] = pair_i[c];
+        grouped_j[at] = pair_j[c];
+      }
+      begin = 0;
+      for (int k : group_keys) {
+        pairs(models[k], grouped_i + begin, grouped_j + begin, group_count[k] - begin);
+        begin = group_count[k];
+        group_count[k] = 0;
+      }
+    }
+  };
+  run_list(film_i.data(), film_j.data(), nfilm, film_pairs);
+  run_list(candidate_i.data(), candidate_j.data(), ncandidate, kept_pairs);
+}
+
+template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpot::eval()
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  const double *radius = atom->radius;
+  const double *rmass = atom->rmass;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const double dt = update->dt;
+  // Full-step velocities at a run start, used by each integrator its own way (contact_step.h).
+  const lub::Evaluation when = lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
+  const double *inverse = inverse_mass_on ? inverse_mass.data() : nullptr;
+
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+  const lub::NormalModel *model_table = models.data();
+  const double *reach_table = max_reach.data();
+  const int stride = ntypes_alloc + 1;
+
+  // How far each owned or ghost atom can move in the coming step (|v|_1 dt >= |v| dt): the
+  // pairs that can close their gap within it are within the sum of both.
+  const int nall = atom->nlocal + atom->nghost;
+  if (static_cast<int>(step_reach.size()) < nall) step_reach.resize(atom->nmax);
+  for (int k = 0; k < nall; k++) {
+    const double *vk = midpoint ? midpoint->step_velocity(k) : v[k];
+    step_reach[k] = (std::fabs(vk[0]) + std::fabs(vk[1]) + std::fabs(vk[2])) * dt;
+  }
+  const double *moves = step_reach.data();
+
+  // Pass 1, branch-free: keep the list entries that can act within the coming step: in the
+  // film's reach (the largest of the two types) or in contact, or within what both atoms
+  // can move in a step. With friction, entries holding an elongation to forget are kept too.
+  // Whether an entry is kept follows no pattern a branch predictor could learn, hence no branch.
+  // SPLIT: entries apart by more than both atoms can move in the step (no contact can start)
+  // but in the film's reach go to the film-only list instead.
+  int ncandidate = 0, nfilm = 0;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
+    const double radi_moved = radius[i] + moves[i];
+    const double *reach_row = reach_table + type[i] * stride;
+    const int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+    const char *touched = TANGENTIAL && history ? history->touched(i) : nullptr;
+    if (ncandidate + jnum > static_cast<int>(candidate_i.size())) {
+      candidate_i.resize(2 * (ncandidate + jnum));
+      candidate_j.resize(2 * (ncandidate + jnum));
+      if (TANGENTIAL) candidate_jj.resize(2 * (ncandidate + jnum));
+    }
+    if (WET && SPLIT && nfilm + jnum > static_cast<int>(film_i.size())) {
+      film_i.resize(2 * (nfilm + jnum));
+      film_j.resize(2 * (nfilm + jnum));
+    }
+    int *out_i = candidate_i.data(), *out_j = candidate_j.data(), *out_jj = candidate_jj.data();
+    int *film_out_i = film_i.data(), *film_out_j = film_j.data();
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double delx = xi - x[j][0];
+      const double dely = yi - x[j][1];
+      const double delz = zi - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      const double touch = radi_moved + radius[j] + moves[j];
+      const double near = touch + (WET ? reach_row[type[j]] : 0.0);
+      out_i[ncandidate] = i;
+      out_j[ncandidate] = j;
+      if (TANGENTIAL) out_jj[ncandidate] = jj;
+      int keep = rsq < (SPLIT ? touch * touch : near * near);
+      if (WET && SPLIT) {
+        film_out_i[nfilm] = i;
+        film_out_j[nfilm] = j;
+        nfilm += (rsq < near * near) & !keep;
+      }
+      if (TANGENTIAL && touched) keep |= touched[jj];
+      ncandidate += keep;
+    }
+  }
+
+  if (network_check && !update->setupflag && update->ntimestep >= network_next) {
+    network_next = update->ntimestep + lub::network_check_interval;
+    check_contact_network(ncandidate);
+  }
+
+  // Pass 2: the pairs kept by pass 1 (j kept with them: no second look-up in the neighbor
+  // list; jj for the history only).
+  double **torque = atom->torque;
+  const bool budget = WET && film_budget_now;
+  if (budget) reserve_records(ncandidate + nfilm);
+  const double kick_time = lub::film_kick_time(dt, when != lub::Evaluation::step,
+                                               when == lub::Evaluation::midpoint_start);
+  auto evaluate = [&](const int i, const int j, const int jj) __attribute__((always_inline)) {
+    const double delx = x[i][0] - x[j][0];
+    const double dely = x[i][1] - x[j][1];
+    const double delz = x[i][2] - x[j][2];
+    const double rsq = delx * delx + dely * dely + delz * delz;
+    const double radi = radius[i];
+    const double radsum = radi + radius[j];
+    const lub::NormalModel &model = model_table[type[i] * stride + type[j]];
+    // A pair that is not in contact now has no elongation to keep.
+    auto forget = [&]() {
+      if (TANGENTIAL && history) {
+        char &touched = history->touched(i)[jj];
+        if (touched) {
+          touched = 0;
+          double *h = history->values(i) + 3 * jj;
+          h[0] = h[1] = h[2] = 0.0;
+        }
+      }
+    };
+
+    const double *vi = v[i], *vj = v[j];
+    if (midpoint && model.exact) vi = midpoint->step_velocity(i), vj = midpoint->step_velocity(j);
+    const double dvx = vi[0] - vj[0];
+    const double dvy = vi[1] - vj[1];
+    const double dvz = vi[2] - vj[2];
+
+    lub::FilmRadius film;
+    double reach = 0.0;
+    if (WET && model.lubrication.active()) {
+      film = lub::film_radius_pair(radi, radius[j]);
+      reach = model.reach(film.value);
+    }
+    const double outer = radsum + reach;
+    if (rsq >= outer * outer) {
+      // Apart and out of this pair's film (pass 1 used the types' largest): only a contact
+      // starting, or a film entered or left, within a step can act.
+      forget();
+      if (!model.exact) return;
+      if (!within_a_step(rsq, dvx * delx + dvy * dely + dvz * delz, dt, outer * outer)) return;
+    }
+    if (rsq == 0.0) {    // coincident centres: no normal direction is defined
+      forget();
+      return;
+    }
+
+    const double r = std::sqrt(rsq);
+    const double rinv = 1.0 / r;
+    const double u_n = (dvx * delx + dvy * dely + dvz * delz) * rinv;
+    const double m_e = inverse ? lub::reduced_mass_of_inverses(inverse[i], inverse[j])
+                               : lub::reduced_mass(rmass[i], rmass[j]);
+    if (m_e == 0.0) {    // neither atom can move (the vectorised loops give such pairs 0)
+      forget();
+      return;
+    }
+    const lub::NormalForce fn = lub::normal_force(model, r - radsum, film, m_e, u_n, when);
+
+    const double fpair = fn.total() * rinv;
+    double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
+    const double share = budget ? lub::film_share(fn.lubrication, m_e, u_n, kick_time) : 0.0;
+    if (budget && !(TANGENTIAL && shear_records)) record_film(i, j, fn.lubrication, share, nlocal, newton_pair);
+    if (TANGENTIAL) {
+      double ft[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0}, tj[3] = {0.0, 0.0, 0.0};
+      // The slip uses the engine's velocities (under the midpoint integrator: V~, not the
+      // step velocity of the normal contact).
+      const double del[3] = {delx, dely, delz};
+      double dv[3] = {dvx, dvy, dvz};
+      if (vi != v[i])
+        for (int d = 0; d < 3; d++) dv[d] = v[i][d] - v[j][d];
+      double shear[4] = {0.0, 0.0, 0.0, 0.0};    // the shear film's force on i and share
+      const bool shear_budget = budget && shear_records;
+      tangential(i, j, jj, del, dv, rinv, r - radsum, u_n, film.value, m_e, fn.contact, ft, ti, tj,
+                 kick_time, shear_budget ? shear : nullptr);
+      if (shear_budget)
+        record_films(i, j, fn.lubrication, shear, lub::contact_film_share(share, shear[3]), nlocal, newton_pair);
+      fx += ft[0], fy += ft[1], fz += ft[2];
+      for (int d = 0; d < 3; d++) torque[i][d] += ti[d];
+      if (newton_pair || j < nlocal)
+        for (int d = 0; d < 3; d++) torque[j][d] += tj[d];
+    }
+    f[i][0] += fx;
+    f[i][1] += fy;
+    f[i][2] += fz;
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= fx;
+      f[j][1] -= fy;
+      f[j][2] -= fz;
+    }
+    if (evflag) {
+      if (TANGENTIAL)
+        ev_tally_xyz(i, j, nlocal, newton_pair, fn.energy, 0.0, fx, fy, fz, delx, dely, delz);
+      else
+        ev_tally(i, j, nlocal, newton_pair, fn.energy, 0.0, fpair, delx, dely, delz);
+    }
+  };
+
+  if (SPLIT) {
+    vector_forces(ncandidate, nfilm, evaluate);
+    return;
+  }
+  for (int c = 0; c < ncandidate; c++)
+    evaluate(candidate_i[c], candidate_j[c], TANGENTIAL ? candidate_jj[c] : 0);
+}
+
+// The loops compute() runs: one per combination (a scene pays only for what it uses).
+template void PairLubricatedSpringDashpot::eval<true, true>();
+template void PairLubricatedSpringDashpot::eval<false, true>();
+template void PairLubricatedSpringDashpot::eval<true, false>();
+template void PairLubricatedSpringDashpot::eval<false, false>();
+template void PairLubricatedSpringDashpot::eval<true, false, true>();
+template void PairLubricatedSpringDashpot::eval<false, false, true>();
