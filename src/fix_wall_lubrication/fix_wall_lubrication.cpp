@@ -9,6 +9,7 @@
 #include "fix_wall_lubrication.h"
 
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
+#include "lubricated/check_setup.h"
 #include "lubricated/film_budget.h"
 #include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
 
@@ -107,16 +108,13 @@ int FixWallLubrication::setmask()
 
 void FixWallLubrication::init()
 {
-  if (comm->me == 0)
-    utils::logmesg(lmp, "{}: e_d = {}, t_c = {:.6g} ({:.3g} steps), {}\n", STYLE, coeffs.e_dry,
-                   coeffs.contact_time(update->dt), coeffs.steps_per_contact(update->dt),
-                   coeffs.wet() ? "film mu_f = " + std::to_string(coeffs.viscosity) : std::string("dry"));
-  const std::string problem = lub::validate_time_step(coeffs, update->dt);
-  if (!problem.empty()) error->all(FLERR, "{}: {}", STYLE, problem);
-  const std::string advice = lub::time_step_warning(coeffs, update->dt);
-  if (!advice.empty() && comm->me == 0) error->warning(FLERR, "{}: {}", STYLE, advice);
-  const std::string calibration = lub::calibration_warning(coeffs, lub::Partner::wall);
-  if (!calibration.empty() && comm->me == 0) error->warning(FLERR, "{}: {}", STYLE, calibration);
+  const lub::SetupCheck check = lub::check_setup(coeffs, lub::Partner::wall, update->dt);
+  if (!check.error.empty()) error->all(FLERR, "{}: {}", STYLE, check.error);
+  if (comm->me == 0) {
+    utils::logmesg(lmp, "{}: {}\n", STYLE, check.description);
+    if (!check.tangential.empty()) utils::logmesg(lmp, "{}: {}\n", STYLE, check.tangential);
+    for (const std::string &w : check.warnings) error->warning(FLERR, "{}: {}", STYLE, w);
+  }
   reset_dt();
   // Under fix nve/sphere/midpoint the step-exact integration uses the velocity over the
   // last step, which that fix provides (see pair_style lubricated/springdashpot).

@@ -37,13 +37,16 @@ NORMAL_MODEL(LUBRICATED, lubricated, 42)
 #include "liggghts/fix_lubricated_film_budget.h"
 #include "liggghts/lubricated_properties.h"
 #include "liggghts/setforce_holds.h"
+#include "lubricated/check_setup.h"
 #include "lubricated/contact_network.h"
 #include "lubricated/film_budget.h"
 #include "lubricated/normal_model.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -101,6 +104,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     warned_ = false;
     if (!is_wall_) find_immovable_groups();
     join_film_budget(caller);
+    report_setup(caller);
   }
 
   inline void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces,
@@ -228,6 +232,29 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   {
     const int mask = atom->mask[i];
     return (mask & hold_bits_) || !(mask & integrate_bits_);
+  }
+
+  // The checks and the description every adapter gives (lubricated/check_setup.h): one line
+  // per type pair of this pair style (or per atom type at this wall), each WARNING once.
+  void report_setup(const char *caller)
+  {
+    if (comm->me != 0) return;
+    const int wall_type = is_wall_ ? static_cast<LAMMPS_NS::FixWallGran *>(hsetup_)->atom_type_wall() : 0;
+    std::set<std::string> warnings;
+    for (int i = 1; i <= ntypes_; i++)
+      for (int j = is_wall_ ? wall_type : i; j <= (is_wall_ ? wall_type : ntypes_); j++) {
+        if (j < 1 || j > ntypes_) continue;
+        const lubricated::SetupCheck check = lubricated::check_setup(
+            coefficients_[i * (ntypes_ + 1) + j], is_wall_ ? lubricated::Partner::wall : lubricated::Partner::particle,
+            update->dt);
+        const std::string line = std::string(caller) + " types " + std::to_string(i) + " " + std::to_string(j) +
+            ": " + check.description + "\n";
+        if (screen) fputs(line.c_str(), screen);
+        if (logfile) fputs(line.c_str(), logfile);
+        for (const std::string &w : check.warnings)
+          warnings.insert(std::string(caller) + ": " + lubricated::liggghts::with_property_names(w));
+      }
+    for (const std::string &w : warnings) error->warning(FLERR, w.c_str());
   }
 
   // The pair's model creates the budget fix (and keeps it after the walls); a wall joins it when

@@ -272,11 +272,12 @@ inline std::string validate_time_step(const Coefficients &c, double dt)
   return "";
 }
 
-// Advice that is not an error: the paper finds N_c = 8 the smallest count that keeps e_d.
+// Advice that is not an error: the paper finds N_c = 8 the smallest count that keeps e_d. A t_c
+// of exactly 8 steps computed in floating point (7.999999999999999) is 8.
 inline std::string time_step_warning(const Coefficients &c, double dt)
 {
   const double n = c.steps_per_contact(dt);
-  if (n < 8.0)
+  if (n < 8.0 * (1.0 - 1e-12))
     return "contact resolved with N_c = " + detail::number(n) +
         " steps; the restitution drifts from e_d below N_c = 8";
   return "";

@@ -8,6 +8,7 @@
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_wall_lubrication/fix_wall_lubrication.h"
+#include "lubricated/check_setup.h"
 #include "lubricated/contact_network.h"
 #include "lubricated/contact_network_message.h"
 #include "lubricated/contact_network_ranks.h"
@@ -162,10 +163,9 @@ void PairLubricatedSpringDashpot::init_style()
     for (int j = i; j <= n; j++) {
       if (!setflag[i][j]) continue;
       const lub::Coefficients &c = coeffs[index(i, j)];
-      const std::string problem = lub::validate_time_step(c, update->dt);
-      if (!problem.empty()) error->all(FLERR, "{} types {} {}: {}", STYLE, i, j, problem);
-      advice.insert(lub::time_step_warning(c, update->dt));
-      advice.insert(lub::calibration_warning(c, lub::Partner::particle));
+      const lub::SetupCheck check = lub::check_setup(c, lub::Partner::particle, update->dt);
+      if (!check.error.empty()) error->all(FLERR, "{} types {} {}: {}", STYLE, i, j, check.error);
+      advice.insert(check.warnings.begin(), check.warnings.end());
       any_wet = any_wet || c.wet();
       any_tangential = any_tangential || c.tangential();
       any_friction = any_friction || c.friction > 0.0;
@@ -275,17 +275,9 @@ double PairLubricatedSpringDashpot::init_one(int i, int j)
   set_network_loads(i, j);
   if (comm->me == 0) {
     // Report what was derived (k and c per unit reduced mass, the contact resolution).
-    const lub::NormalModel &m = models[index(i, j)];
-    utils::logmesg(lmp, "{} types {} {}: e_d = {}, t_c = {:.6g} ({:.3g} steps), k/m_e = {:.6g}, "
-                   "c/m_e = {:.6g}, {}{}\n", STYLE, i, j, c.e_dry, c.contact_time(update->dt),
-                   c.steps_per_contact(update->dt), m.contact.stiffness_per_mass,
-                   m.contact.damping_per_mass,
-                   c.wet() ? fmt::format("film mu_f = {}, ", c.viscosity) : std::string("dry, "),
-                   c.exact_contact ? "integration exact" : "integration sampled");
-    if (c.tangential())
-      utils::logmesg(lmp, "{} types {} {}: friction mu_c = {}, e_t = {}, rolling mu_r = {}, "
-                     "shear film {}\n", STYLE, i, j, c.friction, c.tangential_restitution(),
-                     c.rolling_friction, c.wet() && c.shear_film() ? "on" : "off");
+    const lub::SetupCheck check = lub::check_setup(c, lub::Partner::particle, update->dt);
+    utils::logmesg(lmp, "{} types {} {}: {}\n", STYLE, i, j, check.description);
+    if (!check.tangential.empty()) utils::logmesg(lmp, "{} types {} {}: {}\n", STYLE, i, j, check.tangential);
   }
 
   // The film of the largest pair of these types reaches farthest.

@@ -1,5 +1,6 @@
 // Keyword parsing and range checks shared by pair_coeff and fix wall/lubrication: every
 // bad value is rejected with a message that names the parameter and the allowed range.
+#include "lubricated/check_setup.h"
 #include "lubricated/coefficients.h"
 
 #include <gtest/gtest.h>
@@ -194,4 +195,42 @@ TEST(Coefficients, MessagesQuoteValuesAsTyped)
   const std::string message = validate_time_step(c, 5e-5);
   EXPECT_NE(message.find("tcontact = 1e-06 is shorter than the time step 5e-05"), std::string::npos)
       << message;
+}
+
+// check_setup: the checks and description every adapter (pair style, wall, LIGGGHTS) reports.
+TEST(Coefficients, CheckSetupReportsWhatEveryAdapterPrints)
+{
+  Coefficients c;
+  ASSERT_EQ(parse("0.9 ncontact 4 viscosity 0.001 activation 0.1", c), "");
+  const SetupCheck wet = check_setup(c, Partner::particle, 1e-5);
+  EXPECT_EQ(wet.error, "");
+  ASSERT_EQ(wet.warnings.size(), 1u);
+  EXPECT_NE(wet.warnings[0].find("N_c = 4 steps"), std::string::npos) << wet.warnings[0];
+  EXPECT_EQ(wet.description.rfind("e_d = 0.9, t_c = 4e-05 (4 steps), k/m_e = ", 0), 0u) << wet.description;
+  EXPECT_NE(wet.description.find("film mu_f = 0.001, integration exact"), std::string::npos) << wet.description;
+  EXPECT_EQ(wet.tangential, "");
+  // k/m_e = (pi^2 + ln^2 e_d) / t_c^2 in the text.
+  const double k = (M_PI * M_PI + std::log(0.9) * std::log(0.9)) / (4e-5 * 4e-5);
+  char expected[64];
+  std::snprintf(expected, sizeof expected, "k/m_e = %.6g,", k);
+  EXPECT_NE(wet.description.find(expected), std::string::npos) << wet.description;
+
+  // A contact of 8 steps up to rounding is 8 steps: no warning.
+  ASSERT_EQ(parse("0.9 tcontact 8e-05 friction 0.3", c), "");
+  const SetupCheck eight = check_setup(c, Partner::wall, 1e-5 * (1.0 + 1e-15));
+  EXPECT_TRUE(eight.warnings.empty());
+  EXPECT_NE(eight.description.find("dry, integration exact"), std::string::npos);
+  EXPECT_EQ(eight.tangential.rfind("friction mu_c = 0.3, e_t = 0.9, rolling mu_r = 0", 0), 0u) << eight.tangential;
+  EXPECT_EQ(check_setup(c, Partner::wall, 1.01e-5).warnings.size(), 1u);
+
+  // A time step the contact cannot hold is the error, and nothing else is derived.
+  const SetupCheck bad = check_setup(c, Partner::wall, 2e-4);
+  EXPECT_NE(bad.error.find("N_c = t_c / dt >= 1"), std::string::npos);
+  EXPECT_EQ(bad.description, "");
+
+  // A calibration that cannot act is warned about (test_wet_calibration.cpp).
+  ASSERT_EQ(parse("0.1 ncontact 8 viscosity 0.001 activation 0.1 legendre 35", c), "");
+  const SetupCheck calibrated = check_setup(c, Partner::wall, 1e-5);
+  ASSERT_EQ(calibrated.warnings.size(), 1u);
+  EXPECT_NE(calibrated.warnings[0].find("legendre 35 cannot act"), std::string::npos);
 }

@@ -98,3 +98,17 @@ def test_runner_names_a_missing_library(monkeypatch, tmp_path):
     monkeypatch.setattr(liggghts_run, "LIBRARY", tmp_path / "liblubricated_liggghts.so")
     assert "liblubricated_liggghts.so" in liggghts_run.available()
     assert os.path.exists(liggghts_run.LIGGGHTS)
+
+
+def test_setup_is_described_and_warned_as_in_lammps(run):
+    """The kernel's check_setup, as the LAMMPS styles report it: one line per type pair with the
+    derived k/m_e and c/m_e, and the WARNING for N_c below 8 (LIGGGHTS printed neither before)."""
+    run.lig(liggghts_scenes.wall_bounce(0.9, ncontact=4))
+    log = run.log
+    assert "pair gran model lubricated types 1 1: e_d = 0.9, t_c = " in log and "(4 steps), k/m_e = " in log
+    assert "fix wall/gran model lubricated types 1 2: e_d = 0.9" in log
+    warnings = [line for line in log.splitlines() if line.startswith("WARNING") and "N_c = 4 steps" in line]
+    assert any("pair gran model lubricated" in w for w in warnings)
+    assert any("fix wall/gran model lubricated" in w for w in warnings)
+    run.lig(liggghts_scenes.wall_bounce(0.9, ncontact=8))
+    assert "N_c = " not in run.log
