@@ -1,6 +1,6 @@
 /* -*- c++ -*- ----------------------------------------------------------
-   The mass a contact moves (MODEL.md section 2: m_e = (1/m_i + 1/m_j)^-1, m_i on a wall),
-   for pair_style lubricated/springdashpot and fix wall/lubrication. An atom no contact can
+   The mass a contact moves (doc/model.rst, "Solid contact: the spring-dashpot": m_e =
+   (1/m_i + 1/m_j)^-1, m_i on a wall), for pair_style lubricated/springdashpot and fix wall/lubrication. An atom no contact can
    move counts with infinite mass: one left out of every time-integrating fix (when there is
    one), held by fix freeze or by `fix setforce 0 0 0`, or moved by fix move or nve/noforce.
    An atom of a rigid body (fix rigid, rigid/small and their variants) counts with the body's

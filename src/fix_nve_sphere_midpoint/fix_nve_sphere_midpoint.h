@@ -1,8 +1,8 @@
 /* -*- c++ -*- ----------------------------------------------------------
    fix nve/sphere/midpoint: the time integration of Brandle de Motta et al. (CFM 2011),
-   eqs. (1)-(3) with the second-order extrapolation V~ = 3/2 V^n - 1/2 V^(n-1) (MODEL.md
-   section 4). Forces are evaluated at the predicted mid-step state; usable instead of
-   fix nve/sphere. Keeps V^(n-1) (and omega^(n-1)) per atom, through migration and restarts.
+   eqs. (1)-(3) with the second-order extrapolation V~ = 3/2 V^n - 1/2 V^(n-1) (doc/model.rst,
+   "The paper's time scheme"). Forces are evaluated at the predicted mid-step state; usable
+   instead of fix nve/sphere. Keeps V^(n-1) (and omega^(n-1)) per atom, through migration and restarts.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_NVE_SPHERE_MIDPOINT_H

@@ -1,5 +1,5 @@
-// Stability of a bed's network of sustained contacts under the explicit step (MODEL.md sections 2
-// and 6; doc/pair_lubricated_springdashpot.rst, "Dense beds: the contact network").
+// Stability of a bed's network of sustained contacts under the explicit step (doc/model.rst,
+// "Dense beds: the contact network"; doc/pair_lubricated_springdashpot.rst, the same section).
 //
 // In a contact that lasts (in overlap a step ago, now and a step ahead: "sustained") the exact
 // integration is a spring-dashpot with per-step constants

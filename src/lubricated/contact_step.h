@@ -1,4 +1,5 @@
-// Time integration of the spring-dashpot over one step (numerics for MODEL.md section 2).
+// Time integration of the spring-dashpot over one step (numerics for doc/model.rst, "Solid
+// contact: the spring-dashpot").
 //
 // Sampling F_s = k d + c d_dot once per step misses e_d badly at N_c = 8: the dashpot
 // switches on and off part-way through a step, and the impulse lost or gained there is

@@ -1,4 +1,5 @@
-// Force of an unresolved fluid on one sphere, for the drag fix (MODEL.md section 6).
+// Force of an unresolved fluid on one sphere, for the drag fix (doc/model.rst, "What the paper
+// leaves out").
 //
 //   F = beta (u_f - u_p) - rho_f V_p g
 //

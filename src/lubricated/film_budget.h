@@ -1,5 +1,5 @@
-// Many-body limit of the lubrication film (MODEL.md section 3 and section 6, "stability when the
-// lubrication damper is stiffer than the time step can resolve";
+// Many-body limit of the lubrication film (doc/model.rst, "Many-body film budget": stability
+// when the lubrication damper is stiffer than the time step can resolve;
 // doc/pair_lubricated_springdashpot.rst, "Dense beds").
 //
 // Over one step the film of contact k acts as a linear damper F_k = -c_k u_k n_k (c_k >= 0: its

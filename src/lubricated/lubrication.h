@@ -1,4 +1,5 @@
-// Lubrication film force of Brandle de Motta et al. (CFM 2011), eqs. (5)-(7); MODEL.md section 3.
+// Lubrication film force of Brandle de Motta et al. (CFM 2011), eqs. (5)-(7); doc/model.rst,
+// "Lubrication film".
 //
 //   F_l = -6 pi mu_f R u_n [lambda(eps) - lambda(eps_al)]
 //
@@ -49,32 +50,12 @@ inline const Expansion &expansion_of(Partner partner)
   return partner == Partner::wall ? particle_wall_expansion : particle_particle_expansion;
 }
 
-inline double lambda_particle_particle(double eps)
-{
-  return particle_particle_expansion.lambda(eps);
-}
-
-inline double lambda_particle_wall(double eps)
-{
-  return particle_wall_expansion.lambda(eps);
-}
-
 inline double lambda_of(Partner partner, double eps)
 {
   return expansion_of(partner).lambda(eps);
 }
 
-// Antiderivatives of the two expansions (d/deps of these is lambda).
-inline double lambda_particle_particle_integral(double eps)
-{
-  return particle_particle_expansion.integral(eps);
-}
-
-inline double lambda_particle_wall_integral(double eps)
-{
-  return particle_wall_expansion.integral(eps);
-}
-
+// Antiderivative of lambda (d/deps of it is lambda).
 inline double lambda_integral_of(Partner partner, double eps)
 {
   return expansion_of(partner).integral(eps);
@@ -104,14 +85,15 @@ struct Lubrication {
 
   bool active() const { return six_pi_mu > 0.0; }
 
-  // Breugem's rule with a grid: the film starts at a gap of 0.75 dx (MODEL.md section 1).
+  // Breugem's rule with a grid: the film starts at a gap of 0.75 dx (doc/model.rst, "Zones of the
+  // normal interaction").
   static constexpr double grid_activation = 0.75;
 
   // Activation distance in units of R for a contact of lubrication radius R. With a grid, a
   // contact so large that 0.75 dx / R falls below eps_1 gets eps_al = eps_1, that is no film:
   // lambda(eps_1) - lambda(eps_al) < 0 would make a film that pulls the surfaces together
-  // (MODEL.md section 1 orders the zones eps_2 < eps_1 < eps_al; a fixed eps_al must exceed
-  // eps_1, coefficients.h).
+  // (doc/model.rst, "Zones of the normal interaction" orders the zones eps_2 < eps_1 < eps_al; a
+  // fixed eps_al must exceed eps_1, coefficients.h).
   double activation_for(const FilmRadius &radius) const
   {
     return grid_spacing > 0.0 ? std::max(grid_activation * grid_spacing * radius.inverse, eps_saturation)

@@ -1,6 +1,6 @@
 // The full normal interaction of one contact: spring-dashpot in overlap plus the lubrication
-// film (MODEL.md sections 1-3). Engines call normal_force() once per neighbour pair or per
-// particle-wall pair; everything else here is set up once per type pair.
+// film (doc/model.rst, "Zones" to "The per-pair cap"). Engines call normal_force() once per
+// neighbour pair or per particle-wall pair; everything else here is set up once per type pair.
 //
 // Conventions (the only place they are written down):
 //   n     unit normal pointing from the partner (particle j or the wall) to particle i;
@@ -110,7 +110,8 @@ struct NormalForce {
 };
 
 // The film's force over a step from its impulse there: it may stop the relative motion but
-// never reverse it, |impulse| <= m_e |u_n| = limit (lubrication.h, MODEL.md section 3).
+// never reverse it, |impulse| <= m_e |u_n| = limit (lubrication.h, doc/model.rst, "Lubrication
+// film").
 inline double film_force_of_impulse(double impulse, double limit, double inv_dt)
 {
   return std::max(-limit, std::min(limit, impulse)) * inv_dt;
@@ -188,9 +189,9 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
 
 // The film force of normal_force() (exact integration, a step) for a pair that stays apart over
 // the step, gap >= 0 and gap - u_n dt >= 0, where no contact can act: the film's path integral
-// over the step (MODEL.md section 3, lubrication.h) as a force [force], without branches or
-// calls, for loops over such pairs that the compiler vectorises. Requires an active film;
-// GRID: whether it has a grid spacing (Lubrication::activation_inline).
+// over the step (doc/model.rst, "Lubrication film", lubrication.h) as a force [force], without
+// branches or calls, for loops over such pairs that the compiler vectorises. Requires an
+// active film; GRID: whether it has a grid spacing (Lubrication::activation_inline).
 template <bool GRID>
 __attribute__((always_inline)) inline double
 film_force_apart(const Lubrication &lub, double gap, const FilmRadius &radius, double reduced_mass,
@@ -205,9 +206,9 @@ film_force_apart(const Lubrication &lub, double gap, const FilmRadius &radius, d
 
 // normal_force() (exact integration, a step) for a pair in sustained contact: in overlap now
 // and a step ago and, by the oscillator's recurrence, still a step ahead (contact_step.h).
-// Its film is saturated there (MODEL.md section 3: held at its eps_1 value, removed below
-// eps_2), so P is linear in eps and the impulse needs no logarithm of the gap. Forces [force],
-// energy k d^2 / 2 [energy]. Without branches or calls, for loops the compiler
+// Its film is saturated there (doc/model.rst, "Lubrication film": held at its eps_1 value, removed
+// below eps_2), so P is linear in eps and the impulse needs no logarithm of the gap. Forces
+// [force], energy k d^2 / 2 [energy]. Without branches or calls, for loops the compiler
 // vectorises; `sustained` says whether the pair is in that state (if not, the result means
 // nothing: take normal_force()). GRID: whether the film has a grid spacing.
 template <bool GRID>

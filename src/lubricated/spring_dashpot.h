@@ -1,4 +1,5 @@
-// Solid contact of Brandle de Motta et al. (CFM 2011), eq. (4); MODEL.md section 2.
+// Solid contact of Brandle de Motta et al. (CFM 2011), eq. (4); doc/model.rst, "Solid contact: the
+// spring-dashpot".
 //
 //   F_s = k d + c d_dot,   k = m_e (pi^2 + ln(e_d)^2) / t_c^2,   c = -2 m_e ln(e_d) / t_c
 //

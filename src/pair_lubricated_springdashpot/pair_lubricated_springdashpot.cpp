@@ -69,8 +69,8 @@ void PairLubricatedSpringDashpot::allocate()
     for (int j = i; j <= n; j++) setflag[i][j] = 0;
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
   coeffs.assign((n + 1) * (n + 1), lub::Coefficients());
-  models.assign((n + 1) * (n + 1), lub::NormalModel());
-  tmodels.assign((n + 1) * (n + 1), lub::TangentialModel());
+  normal_models.assign((n + 1) * (n + 1), lub::NormalModel());
+  tangential_models.assign((n + 1) * (n + 1), lub::TangentialModel());
   max_reach.assign((n + 1) * (n + 1), 0.0);
   network_load.assign((n + 1) * (n + 1), 0.0);
   network_bound.assign((n + 1) * (n + 1), 0.0);
@@ -269,9 +269,9 @@ double PairLubricatedSpringDashpot::init_one(int i, int j)
   if (!setflag[i][j])
     error->all(FLERR, "{}: coefficients for atom types {} {} are not set (no mixing)", STYLE, i, j);
   const lub::Coefficients &c = coeffs[index(i, j)];
-  models[index(i, j)] = models[index(j, i)] =
+  normal_models[index(i, j)] = normal_models[index(j, i)] =
       lub::make_normal_model(c, lub::Partner::particle, update->dt);
-  tmodels[index(i, j)] = tmodels[index(j, i)] = lub::make_tangential_model(c, update->dt);
+  tangential_models[index(i, j)] = tangential_models[index(j, i)] = lub::make_tangential_model(c, update->dt);
   set_network_loads(i, j);
   if (comm->me == 0) {
     // Report what was derived (k and c per unit reduced mass, the contact resolution).
@@ -283,7 +283,7 @@ double PairLubricatedSpringDashpot::init_one(int i, int j)
   // The film of the largest pair of these types reaches farthest.
   double reach = 0.0;
   if (c.wet() && maxrad[i] > 0.0 && maxrad[j] > 0.0)
-    reach = models[index(i, j)].reach(lub::lubrication_radius_pair(maxrad[i], maxrad[j]));
+    reach = normal_models[index(i, j)].reach(lub::lubrication_radius_pair(maxrad[i], maxrad[j]));
   max_reach[index(i, j)] = max_reach[index(j, i)] = reach;
   return maxrad[i] + maxrad[j] + reach;
 }
@@ -294,9 +294,9 @@ void PairLubricatedSpringDashpot::update_models()
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++)
       if (setflag[i][j]) {
-        models[index(i, j)] = models[index(j, i)] =
+        normal_models[index(i, j)] = normal_models[index(j, i)] =
             lub::make_normal_model(coeffs[index(i, j)], lub::Partner::particle, update->dt);
-        tmodels[index(i, j)] = tmodels[index(j, i)] =
+        tangential_models[index(i, j)] = tangential_models[index(j, i)] =
             lub::make_tangential_model(coeffs[index(i, j)], update->dt);
         set_network_loads(i, j);
       }
@@ -306,12 +306,12 @@ void PairLubricatedSpringDashpot::update_models()
 // constants, and the larger of it and the tangential spring's (friction) for the upper bound.
 void PairLubricatedSpringDashpot::set_network_loads(int i, int j)
 {
-  const lub::NormalModel &m = models[index(i, j)];
+  const lub::NormalModel &m = normal_models[index(i, j)];
   const double dt = update->dt;
   const double load = m.exact
       ? lub::contact_load(m.step.stiffness_step, m.step.damping_step, dt)
       : lub::contact_load(m.contact.stiffness_per_mass, m.contact.damping_per_mass, dt);
-  const lub::TangentialModel &tm = tmodels[index(i, j)];
+  const lub::TangentialModel &tm = tangential_models[index(i, j)];
   const double bound =
       tm.contact_active() ? std::max(load, lub::contact_load(tm.stiffness_step, tm.damping_step, dt)) : load;
   network_load[index(i, j)] = network_load[index(j, i)] = load;
@@ -404,7 +404,7 @@ double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, d
   const double r = std::sqrt(rsq);
   const double lub_radius = lub::lubrication_radius_pair(radi, radj);
   svector[2] = (r - radsum) / lub_radius;
-  const lub::NormalModel &model = models[index(itype, jtype)];
+  const lub::NormalModel &model = normal_models[index(itype, jtype)];
   if (rsq == 0.0) return 0.0;
 
   double **x = atom->x, **v = atom->v;
@@ -458,7 +458,7 @@ void PairLubricatedSpringDashpot::read_restart(FILE *fp)
 double PairLubricatedSpringDashpot::memory_usage()
 {
   return Pair::memory_usage() + coeffs.size() * sizeof(lub::Coefficients) +
-      models.size() * sizeof(lub::NormalModel) +
+      normal_models.size() * sizeof(lub::NormalModel) +
       (candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity() +
        film_i.capacity() + film_j.capacity() + group_count.capacity() + group_keys.capacity() +
        record_i.capacity() + record_j.capacity()) *

@@ -49,8 +49,8 @@ class PairLubricatedSpringDashpot : public Pair {
 
  protected:
   std::vector<lubricated::Coefficients> coeffs;    // per type pair, (ntypes+1)^2
-  std::vector<lubricated::NormalModel> models;     // derived from coeffs and dt
-  std::vector<lubricated::TangentialModel> tmodels;    // tangential part, derived likewise
+  std::vector<lubricated::NormalModel> normal_models;     // derived from coeffs and dt
+  std::vector<lubricated::TangentialModel> tangential_models;    // tangential part, derived likewise
   std::vector<double> maxrad;                      // largest radius per type
   std::vector<double> max_reach;                   // farthest film gap per type pair
   bool any_wet = false;

@@ -42,7 +42,7 @@ inline void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const 
                                                     double normal_force, double *ft, double *ti,
                                                     double *tj, double kick_time, double *shear)
 {
-  const lub::TangentialModel &tm = tmodels[index(atom->type[i], atom->type[j])];
+  const lub::TangentialModel &tm = tangential_models[index(atom->type[i], atom->type[j])];
   const double radi = atom->radius[i], radj = atom->radius[j];
   double **omega = atom->omega;
   const lub::Vec3 n{del[0] * rinv, del[1] * rinv, del[2] * rinv};
@@ -70,7 +70,7 @@ inline void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const 
     }
   }
   if (tm.film_active()) {
-    const lub::Lubrication &film = models[index(atom->type[i], atom->type[j])].lubrication;
+    const lub::Lubrication &film = normal_models[index(atom->type[i], atom->type[j])].lubrication;
     const double eps = gap / lub_radius;
     const lub::Vec3 fs = lub::shear_film_force(tm, s, eps, film.activation_for(lub_radius),
                                                film.eps_saturation, film.eps_release,
@@ -167,13 +167,13 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
   // A list in chunks, each grouped by type pair (a counting sort within the chunk, which
   // keeps the atoms' data in the cache) unless one model serves all.
   int key[chunk], grouped_i[chunk], grouped_j[chunk];
-  group_count.resize(models.size(), 0);    // all zero between chunks
+  group_count.resize(normal_models.size(), 0);    // all zero between chunks
   auto run_list = [&](const int *list_i, const int *list_j, int count, auto &pairs) {
     for (int start = 0; start < count; start += chunk) {
       const int n = std::min(chunk, count - start);
       const int *pair_i = list_i + start, *pair_j = list_j + start;
       if (uniform_models) {
-        pairs(models[index(1, 1)], pair_i, pair_j, n);
+        pairs(normal_models[index(1, 1)], pair_i, pair_j, n);
         continue;
       }
       group_keys.clear();
@@ -194,7 +194,7 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
       }
       begin = 0;
       for (int k : group_keys) {
-        pairs(models[k], grouped_i + begin, grouped_j + begin, group_count[k] - begin);
+        pairs(normal_models[k], grouped_i + begin, grouped_j + begin, group_count[k] - begin);
         begin = group_count[k];
         group_count[k] = 0;
       }
@@ -223,7 +223,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   const int *ilist = list->ilist;
   const int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
-  const lub::NormalModel *model_table = models.data();
+  const lub::NormalModel *model_table = normal_models.data();
   const double *reach_table = max_reach.data();
   const int stride = ntypes_alloc + 1;
 

@@ -1,5 +1,5 @@
-// Lubrication law of MODEL.md section 3: the lambda expansions, the activation at eps_al,
-// the saturation below eps_1 and the release below eps_2.
+// Lubrication law of doc/model.rst, "Lubrication film": the lambda expansions, the activation at
+// eps_al, the saturation below eps_1 and the release below eps_2.
 #include "lubricated/normal_model.h"
 
 #include <gtest/gtest.h>
@@ -11,18 +11,18 @@ using namespace lubricated;
 TEST(Lambda, PrintedExpansions)
 {
   const double eps = 0.01, l = std::log(eps);
-  EXPECT_DOUBLE_EQ(lambda_particle_particle(eps), 0.5 / eps - 0.45 * l - 3.0 / 56.0 * eps * l + 1.346);
-  EXPECT_DOUBLE_EQ(lambda_particle_wall(eps), 1.0 / eps - 0.2 * l - 1.0 / 21.0 * eps * l + 0.9713);
+  EXPECT_DOUBLE_EQ(particle_particle_expansion.lambda(eps), 0.5 / eps - 0.45 * l - 3.0 / 56.0 * eps * l + 1.346);
+  EXPECT_DOUBLE_EQ(particle_wall_expansion.lambda(eps), 1.0 / eps - 0.2 * l - 1.0 / 21.0 * eps * l + 0.9713);
   // Leading terms: Brenner's 1/eps at a wall, half of it between equal spheres.
-  EXPECT_NEAR(lambda_particle_wall(1e-8) * 1e-8, 1.0, 1e-6);
-  EXPECT_NEAR(lambda_particle_particle(1e-8) * 1e-8, 0.5, 1e-6);
+  EXPECT_NEAR(particle_wall_expansion.lambda(1e-8) * 1e-8, 1.0, 1e-6);
+  EXPECT_NEAR(particle_particle_expansion.lambda(1e-8) * 1e-8, 0.5, 1e-6);
 }
 
 TEST(Lambda, DecreasingOverTheAllowedActivationRange)
 {
   for (double eps = 1e-4; eps < 1.0; eps *= 1.1) {
-    EXPECT_GT(lambda_particle_wall(eps), lambda_particle_wall(eps * 1.1));
-    EXPECT_GT(lambda_particle_particle(eps), lambda_particle_particle(eps * 1.1));
+    EXPECT_GT(particle_wall_expansion.lambda(eps), particle_wall_expansion.lambda(eps * 1.1));
+    EXPECT_GT(particle_particle_expansion.lambda(eps), particle_particle_expansion.lambda(eps * 1.1));
   }
 }
 

@@ -1,5 +1,6 @@
 // The spring-dashpot constants reproduce e_d and t_c exactly for the continuous oscillator,
-// and a fine integration of m_e x'' = -F_s recovers them (MODEL.md section 2).
+// and a fine integration of m_e x'' = -F_s recovers them (doc/model.rst, "Solid contact: the
+// spring-dashpot").
 #include "lubricated/normal_model.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
-"""Dry impacts (MODEL.md section 2): the rebound speed is e_d and the contact lasts N_c steps.
+"""Dry impacts (doc/model.rst, "Solid contact: the spring-dashpot"): the rebound speed is e_d and
+the contact lasts N_c steps.
 
 Tolerance: 1 % of e_d, the issue's requirement. The step integration is exact for an
 isolated pair, so a failure here means a broken contact law, not noise.

@@ -1,6 +1,7 @@
 """Partners a contact cannot move, and rigid bodies (issue 17, "Frozen partners").
 
-MODEL.md section 2 takes k and c from m_e, the mass the contact accelerates: the reduced mass
+doc/model.rst, "Solid contact: the spring-dashpot" takes k and c from m_e, the mass the contact
+accelerates: the reduced mass
 m_i m_j / (m_i + m_j) of two free spheres, m_i against a partner that does not move (a wall,
 a sphere left out of the time integration, held by fix freeze, by fix setforce 0 0 0 or
 moved by fix move), m_i M / (m_i + M) against a rigid body of mass M. With that m_e the

@@ -1,4 +1,5 @@
-"""Wet particle-wall impacts (MODEL.md sections 3 and 5), set-up (a) of the paper: no fluid,
+"""Wet particle-wall impacts (doc/model.rst, "Lubrication film" and "Wet restitution"), set-up (a)
+of the paper: no fluid,
 lubrication imposed for a given viscosity, St varied through mu_f, at the documented time
 step dt = 0.005 R/U with e_d = 0.9, N_c = 8 and eps_al = 0.09375 (R/dx = 8).
 

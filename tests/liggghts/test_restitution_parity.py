@@ -1,6 +1,6 @@
 """LIGGGHTS's model lubricated and the LAMMPS plugin run the same kernel: the same impact must
 give the same restitution (the issue asks 1e-3; both integrate with velocity Verlet, so they
-agree to round-off), and that restitution must be the model's (anchors from MODEL.md)."""
+agree to round-off), and that restitution must be the model's (anchors from doc/model.rst)."""
 import pytest
 
 import liggghts_scenes
@@ -15,7 +15,8 @@ def test_dry_restitution_matches_lammps(run, kind, e_dry):
     lig = run.lig(build[0](e_dry))
     lmp = run.lmp(build[1](e_dry))
     assert lig["e"] == pytest.approx(lmp["e"], abs=1e-3)
-    assert lig["e"] == pytest.approx(e_dry, rel=0.01)           # MODEL.md section 2: e = e_d
+    assert lig["e"] == pytest.approx(e_dry, rel=0.01)           # doc/model.rst, "Solid contact:
+    the spring-dashpot": e = e_d
     assert abs(lig["contact_steps"] - 8) <= 1                     # contact lasts N_c steps
 
 
