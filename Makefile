@@ -4,7 +4,7 @@ PY     := $(VENV)/bin/python
 BUILD  := build
 JOBS   ?= 2
 
-.PHONY: all setup setup-liggghts build demo test test-kernel test-lammps test-liggghts bench \
+.PHONY: all setup setup-liggghts build demo test test-kernel test-lammps test-liggghts bench format format-check \
         bench-liggghts report fluidized-bed liggghts-demo clean
 
 all: build
@@ -24,7 +24,14 @@ build: setup
 demo: build
 	$(PY) examples/wall_bounce/st_sweep.py --out $(BUILD)/demo
 
-test: setup-liggghts build test-kernel test-lammps test-liggghts
+test: setup-liggghts build format-check test-kernel test-lammps test-liggghts
+
+# The C++ sources follow .clang-format (clang-format 14, installed by make setup).
+format: setup
+	@bash scripts/format.sh
+
+format-check: setup
+	@bash scripts/format.sh --check
 
 test-kernel:
 	cd $(BUILD) && ctest --output-on-failure

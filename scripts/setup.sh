@@ -10,6 +10,7 @@ command -v cmake >/dev/null || need_pkgs+=(cmake)
 command -v g++ >/dev/null || need_pkgs+=(g++)
 command -v make >/dev/null || need_pkgs+=(make)
 [ -f /usr/include/gtest/gtest.h ] || need_pkgs+=(libgtest-dev)
+command -v clang-format >/dev/null || need_pkgs+=(clang-format)
 python3 -c 'import venv, ensurepip' 2>/dev/null || need_pkgs+=(python3-venv)
 if [ ${#need_pkgs[@]} -gt 0 ]; then
   if [ "$(id -u)" = 0 ]; then

@@ -102,7 +102,8 @@ void ContactMass::init(const std::string &who, bool log)
   double local[2] = {0.0, 0.0}, total[2];    // immovable, in rigid bodies
   const int *mask = atom->mask;
   for (int i = 0; i < atom->nlocal; i++) {
-    if (held(mask[i])) local[0] += 1.0;
+    if (held(mask[i]))
+      local[0] += 1.0;
     else
       for (Fix *fix : rigid)
         if (mask[i] & fix->groupbit) {
@@ -114,12 +115,16 @@ void ContactMass::init(const std::string &who, bool log)
   any = total[0] + total[1] > 0.0;
   if (!log || comm->me != 0) return;
   for (const auto &id : unknown)
-    error->warning(FLERR, "{}: fix {} setforce was defined before the plugin was loaded (or, after a "
+    error->warning(FLERR,
+                   "{}: fix {} setforce was defined before the plugin was loaded (or, after a "
                    "clear, before the plugin's first style): its arguments are unknown, its atoms are not "
-                   "taken as immovable", who, id);
+                   "taken as immovable",
+                   who, id);
   if (any)
-    utils::logmesg(lmp, "{}: {:.0f} immovable atoms (infinite mass in contacts), {:.0f} in rigid bodies "
-                   "(the body's mass)\n", who, total[0], total[1]);
+    utils::logmesg(lmp,
+                   "{}: {:.0f} immovable atoms (infinite mass in contacts), {:.0f} in rigid bodies "
+                   "(the body's mass)\n",
+                   who, total[0], total[1]);
 }
 
 void ContactMass::fill(double *inverse)
@@ -127,7 +132,8 @@ void ContactMass::fill(double *inverse)
   const int *mask = atom->mask;
   const double *rmass = atom->rmass;
   const int nlocal = atom->nlocal;
-  for (int i = 0; i < nlocal; i++) inverse[i] = held(mask[i]) ? 0.0 : 1.0 / rmass[i];
+  for (int i = 0; i < nlocal; i++)
+    inverse[i] = held(mask[i]) ? 0.0 : 1.0 / rmass[i];
   for (Fix *fix : rigid) {
     int dim;
     const auto body = static_cast<const int *>(fix->extract("body", dim));

@@ -43,10 +43,7 @@ class ContactMass : protected Pointers {
   bool any_integrator = false;
   std::vector<class Fix *> rigid;
   bool any = false;
-  bool held(int mask) const
-  {
-    return (mask & held_bits) || (any_integrator && !(mask & integrated_bits));
-  }
+  bool held(int mask) const { return (mask & held_bits) || (any_integrator && !(mask & integrated_bits)); }
 };
 
 }    // namespace LAMMPS_NS

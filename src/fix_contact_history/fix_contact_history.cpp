@@ -43,23 +43,44 @@ int FixContactHistory::setmask()
 
 void FixContactHistory::init()
 {
-  if (atom->tag_enable == 0)
-    error->all(FLERR, "Pair style lubricated/springdashpot with friction requires atom IDs");
+  if (atom->tag_enable == 0) error->all(FLERR, "Pair style lubricated/springdashpot with friction requires atom IDs");
 }
 
-void FixContactHistory::setup_pre_exchange() { store_from_list(); }
-void FixContactHistory::pre_exchange() { store_from_list(); }
-void FixContactHistory::min_pre_exchange() { store_from_list(); }
-void FixContactHistory::setup_post_neighbor() { map_to_list(); }
-void FixContactHistory::post_neighbor() { map_to_list(); }
-void FixContactHistory::min_post_neighbor() { map_to_list(); }
+void FixContactHistory::setup_pre_exchange()
+{
+  store_from_list();
+}
+void FixContactHistory::pre_exchange()
+{
+  store_from_list();
+}
+void FixContactHistory::min_pre_exchange()
+{
+  store_from_list();
+}
+void FixContactHistory::setup_post_neighbor()
+{
+  map_to_list();
+}
+void FixContactHistory::post_neighbor()
+{
+  map_to_list();
+}
+void FixContactHistory::min_post_neighbor()
+{
+  map_to_list();
+}
 // Between runs (write_restart, write_data, a changed group) the per-atom records are the truth.
-void FixContactHistory::post_run() { store_from_list(); }
+void FixContactHistory::post_run()
+{
+  store_from_list();
+}
 
 void FixContactHistory::add(int i, tagint other, const double *v, double sign)
 {
   partner[i].push_back(other);
-  for (int k = 0; k < nvalue; k++) partner_value[i].push_back(sign * v[k]);
+  for (int k = 0; k < nvalue; k++)
+    partner_value[i].push_back(sign * v[k]);
 }
 
 // Flat list arrays -> per-atom records of both atoms of every touching pair.
@@ -89,7 +110,8 @@ void FixContactHistory::store_from_list()
   if (newton) comm->reverse_comm_variable(this);
 
   int local_max = 1;
-  for (int i = 0; i < nlocal; i++) local_max = std::max(local_max, record_size(i));
+  for (int i = 0; i < nlocal; i++)
+    local_max = std::max(local_max, record_size(i));
   maxexchange = local_max;
 }
 
@@ -133,7 +155,8 @@ int FixContactHistory::pack_record(int i, double *buf) const
   buf[m++] = static_cast<double>(partner[i].size());
   for (size_t k = 0; k < partner[i].size(); k++) {
     buf[m++] = ubuf(partner[i][k]).d;
-    for (int d = 0; d < nvalue; d++) buf[m++] = partner_value[i][k * nvalue + d];
+    for (int d = 0; d < nvalue; d++)
+      buf[m++] = partner_value[i][k * nvalue + d];
   }
   return m;
 }
@@ -148,7 +171,8 @@ int FixContactHistory::unpack_record(int i, const double *buf, bool append)
   const int n = static_cast<int>(buf[m++]);
   for (int k = 0; k < n; k++) {
     partner[i].push_back(static_cast<tagint>(ubuf(buf[m++]).i));
-    for (int d = 0; d < nvalue; d++) partner_value[i].push_back(buf[m++]);
+    for (int d = 0; d < nvalue; d++)
+      partner_value[i].push_back(buf[m++]);
   }
   return m;
 }
@@ -171,7 +195,10 @@ void FixContactHistory::set_arrays(int i)
   partner_value[i].clear();
 }
 
-int FixContactHistory::pack_exchange(int i, double *buf) { return pack_record(i, buf); }
+int FixContactHistory::pack_exchange(int i, double *buf)
+{
+  return pack_record(i, buf);
+}
 
 int FixContactHistory::unpack_exchange(int nlocal, double *buf)
 {
@@ -189,16 +216,21 @@ void FixContactHistory::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
   int m = 0;
-  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  for (int k = 0; k < nth; k++)
+    m += static_cast<int>(extra[nlocal][m]);
   unpack_record(nlocal, &extra[nlocal][m + 1], false);
 }
 
-int FixContactHistory::size_restart(int i) { return 1 + record_size(i); }
+int FixContactHistory::size_restart(int i)
+{
+  return 1 + record_size(i);
+}
 
 int FixContactHistory::maxsize_restart()
 {
   int local_max = 1;
-  for (int i = 0; i < atom->nlocal; i++) local_max = std::max(local_max, record_size(i));
+  for (int i = 0; i < atom->nlocal; i++)
+    local_max = std::max(local_max, record_size(i));
   return 1 + local_max;
 }
 
@@ -206,21 +238,24 @@ int FixContactHistory::maxsize_restart()
 int FixContactHistory::pack_reverse_comm_size(int n, int first)
 {
   int m = 0;
-  for (int i = first; i < first + n; i++) m += record_size(i);
+  for (int i = first; i < first + n; i++)
+    m += record_size(i);
   return m;
 }
 
 int FixContactHistory::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
-  for (int i = first; i < first + n; i++) m += pack_record(i, buf + m);
+  for (int i = first; i < first + n; i++)
+    m += pack_record(i, buf + m);
   return m;
 }
 
 void FixContactHistory::unpack_reverse_comm(int n, int *list_, double *buf)
 {
   int m = 0;
-  for (int k = 0; k < n; k++) m += unpack_record(list_[k], buf + m, true);
+  for (int k = 0; k < n; k++)
+    m += unpack_record(list_[k], buf + m, true);
 }
 
 double FixContactHistory::memory_usage()

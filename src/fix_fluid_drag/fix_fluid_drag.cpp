@@ -57,30 +57,37 @@ FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
     } else if (key == "law") {
       need(iarg, 1);
       const std::string law = arg[iarg + 1];
-      if (law == "stokes") model.law = lub::DragLaw::stokes;
-      else if (law == "schiller-naumann") model.law = lub::DragLaw::schiller_naumann;
-      else error->all(FLERR, "{}: law must be stokes or schiller-naumann, got '{}'", STYLE, law);
+      if (law == "stokes")
+        model.law = lub::DragLaw::stokes;
+      else if (law == "schiller-naumann")
+        model.law = lub::DragLaw::schiller_naumann;
+      else
+        error->all(FLERR, "{}: law must be stokes or schiller-naumann, got '{}'", STYLE, law);
       iarg += 2;
     } else if (key == "hindrance") {
       need(iarg, 1);
       const std::string h = arg[iarg + 1];
       iarg += 2;
-      if (h == "none") model.hindrance = lub::Hindrance::none;
-      else if (h == "di-felice") model.hindrance = lub::Hindrance::di_felice;
+      if (h == "none")
+        model.hindrance = lub::Hindrance::none;
+      else if (h == "di-felice")
+        model.hindrance = lub::Hindrance::di_felice;
       else if (h == "richardson-zaki") {
         need(iarg - 1, 1);
         model.hindrance = lub::Hindrance::richardson_zaki;
         model.rz_exponent = number(iarg);
         if (!(model.rz_exponent >= 1.0 && model.rz_exponent <= 10.0))
-          error->all(FLERR, "{}: richardson-zaki n = {} is out of range (allowed: 1 <= n <= 10)",
-                     STYLE, arg[iarg]);
+          error->all(FLERR, "{}: richardson-zaki n = {} is out of range (allowed: 1 <= n <= 10)", STYLE, arg[iarg]);
         iarg += 1;
-      } else error->all(FLERR, "{}: hindrance must be none, richardson-zaki n or di-felice, got '{}'", STYLE, h);
+      } else
+        error->all(FLERR, "{}: hindrance must be none, richardson-zaki n or di-felice, got '{}'", STYLE, h);
     } else if (key == "velocity") {
       need(iarg, 3);
       for (int d = 0; d < 3; d++) {
-        if (utils::strmatch(arg[iarg + 1 + d], "^v_")) velocity[d].name = arg[iarg + 1 + d] + 2;
-        else velocity[d].value = number(iarg + 1 + d);
+        if (utils::strmatch(arg[iarg + 1 + d], "^v_"))
+          velocity[d].name = arg[iarg + 1 + d] + 2;
+        else
+          velocity[d].value = number(iarg + 1 + d);
       }
       iarg += 4;
     } else if (key == "superficial") {
@@ -89,7 +96,8 @@ FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
       iarg += 2;
     } else if (key == "buoyancy") {
       need(iarg, 3);
-      for (int d = 0; d < 3; d++) gravity[d] = number(iarg + 1 + d);
+      for (int d = 0; d < 3; d++)
+        gravity[d] = number(iarg + 1 + d);
       iarg += 4;
     } else if (key == "bins") {
       need(iarg, 3);
@@ -105,8 +113,10 @@ FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
       if (every < 1) error->all(FLERR, "{}: every = {} is out of range (allowed: N >= 1)", STYLE, every);
       iarg += 2;
     } else {
-      error->all(FLERR, "{}: unknown keyword '{}' (expected viscosity, density, law, hindrance, "
-                 "velocity, superficial, buoyancy, bins or every)", STYLE, key);
+      error->all(FLERR,
+                 "{}: unknown keyword '{}' (expected viscosity, density, law, hindrance, "
+                 "velocity, superficial, buoyancy, bins or every)",
+                 STYLE, key);
     }
   }
   if (!have_viscosity) error->all(FLERR, "{}: the viscosity keyword is required", STYLE);
@@ -129,7 +139,8 @@ FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
 
 FixFluidDrag::~FixFluidDrag()
 {
-  for (auto &p : atom_velocity) memory->destroy(p);
+  for (auto &p : atom_velocity)
+    memory->destroy(p);
 }
 
 int FixFluidDrag::setmask()
@@ -148,9 +159,12 @@ void FixFluidDrag::init()
     if (c.name.empty()) continue;
     c.ivar = input->variable->find(c.name.c_str());
     if (c.ivar < 0) error->all(FLERR, "{}: variable {} for the fluid velocity does not exist", STYLE, c.name);
-    if (input->variable->equalstyle(c.ivar)) c.per_atom = false;
-    else if (input->variable->atomstyle(c.ivar)) c.per_atom = true;
-    else error->all(FLERR, "{}: variable {} must be equal-style or atom-style", STYLE, c.name);
+    if (input->variable->equalstyle(c.ivar))
+      c.per_atom = false;
+    else if (input->variable->atomstyle(c.ivar))
+      c.per_atom = true;
+    else
+      error->all(FLERR, "{}: variable {} must be equal-style or atom-style", STYLE, c.name);
   }
   last_fraction_step = -1;
 }
@@ -191,8 +205,8 @@ int FixFluidDrag::cloud_in_cell(const double *x, int *bins, double *weights) con
   for (int cz = 0; cz < 2; cz++)
     for (int cy = 0; cy < 2; cy++)
       for (int cx = 0; cx < 2; cx++) {
-        const double w = (cx ? w_hi[0] : 1.0 - w_hi[0]) * (cy ? w_hi[1] : 1.0 - w_hi[1]) *
-            (cz ? w_hi[2] : 1.0 - w_hi[2]);
+        const double w =
+            (cx ? w_hi[0] : 1.0 - w_hi[0]) * (cy ? w_hi[1] : 1.0 - w_hi[1]) * (cz ? w_hi[2] : 1.0 - w_hi[2]);
         if (w == 0.0) continue;
         const int ix = cx ? hi[0] : lo[0], iy = cy ? hi[1] : lo[1], iz = cz ? hi[2] : lo[2];
         bins[count] = (iz * nbins[1] + iy) * nbins[0] + ix;
@@ -207,7 +221,8 @@ double FixFluidDrag::solid_fraction_at(const double *x) const
   double weights[8];
   const int n = cloud_in_cell(x, bins, weights);
   double phi = 0.0;
-  for (int k = 0; k < n; k++) phi += weights[k] * bin_solid[bins[k]];
+  for (int k = 0; k < n; k++)
+    phi += weights[k] * bin_solid[bins[k]];
   return phi;
 }
 
@@ -222,12 +237,14 @@ void FixFluidDrag::update_solid_fraction()
     if (!(mask[i] & groupbit)) continue;
     const double volume = lub::sphere_volume(atom->radius[i]);
     const int n = cloud_in_cell(atom->x[i], bins, weights);
-    for (int k = 0; k < n; k++) local_sum[bins[k]] += weights[k] * volume;
+    for (int k = 0; k < n; k++)
+      local_sum[bins[k]] += weights[k] * volume;
   }
-  MPI_Allreduce(local_sum.data(), bin_solid.data(), (int) bin_solid.size(), MPI_DOUBLE, MPI_SUM, world);
-  const double bin_volume = domain->prd[0] * domain->prd[1] * (domain->dimension == 3 ? domain->prd[2] : 1.0) /
-      bin_solid.size();
-  for (double &v : bin_solid) v /= bin_volume;
+  MPI_Allreduce(local_sum.data(), bin_solid.data(), (int)bin_solid.size(), MPI_DOUBLE, MPI_SUM, world);
+  const double bin_volume =
+      domain->prd[0] * domain->prd[1] * (domain->dimension == 3 ? domain->prd[2] : 1.0) / bin_solid.size();
+  for (double &v : bin_solid)
+    v /= bin_volume;
   last_fraction_step = update->ntimestep;
 }
 
@@ -239,7 +256,8 @@ void FixFluidDrag::post_force(int /*vflag*/)
 
   // Fluid velocity: constants, equal-style or atom-style variables.
   bool any_per_atom = false;
-  for (auto &c : velocity) any_per_atom = any_per_atom || c.per_atom;
+  for (auto &c : velocity)
+    any_per_atom = any_per_atom || c.per_atom;
   if (any_per_atom && atom->nmax > maxatom) {
     maxatom = atom->nmax;
     for (auto &p : atom_velocity) {
@@ -252,8 +270,10 @@ void FixFluidDrag::post_force(int /*vflag*/)
     for (int d = 0; d < 3; d++) {
       Component &c = velocity[d];
       if (c.name.empty()) continue;
-      if (c.per_atom) input->variable->compute_atom(c.ivar, igroup, atom_velocity[d], 1, 0);
-      else c.value = input->variable->compute_equal(c.ivar);
+      if (c.per_atom)
+        input->variable->compute_atom(c.ivar, igroup, atom_velocity[d], 1, 0);
+      else
+        c.value = input->variable->compute_equal(c.ivar);
     }
     modify->addstep_compute(update->ntimestep + 1);
   }
@@ -262,7 +282,8 @@ void FixFluidDrag::post_force(int /*vflag*/)
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *mask = atom->mask;
   const double dt = update->dt;
-  for (double &t : totals) t = 0.0;
+  for (double &t : totals)
+    t = 0.0;
   totals_reduced = false;
 
   for (int i = 0; i < nlocal; i++) {

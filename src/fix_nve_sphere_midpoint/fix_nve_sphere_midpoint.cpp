@@ -29,8 +29,7 @@ using namespace FixConst;
 
 static constexpr const char *STYLE = "Fix nve/sphere/midpoint";
 
-FixNVESphereMidpoint::FixNVESphereMidpoint(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg)
+FixNVESphereMidpoint::FixNVESphereMidpoint(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
 {
   if (narg > 3) error->all(FLERR, "{}: unknown keyword '{}' (the fix takes no arguments)", STYLE, arg[3]);
   if (!(atom->radius_flag && atom->rmass_flag && atom->omega_flag && atom->torque_flag))
@@ -45,7 +44,8 @@ FixNVESphereMidpoint::FixNVESphereMidpoint(LAMMPS *lmp, int narg, char **arg) :
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
-  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+  for (int i = 0; i < atom->nlocal; i++)
+    set_arrays(i);
 }
 
 FixNVESphereMidpoint::~FixNVESphereMidpoint()
@@ -66,7 +66,8 @@ void FixNVESphereMidpoint::setup_pre_force(int /*vflag*/)
 {
   // Before the first step V^n is the current velocity.
   for (int i = 0; i < atom->nlocal; i++)
-    for (int d = 0; d < 3; d++) state[i][6 + d] = atom->v[i][d];
+    for (int d = 0; d < 3; d++)
+      state[i][6 + d] = atom->v[i][d];
   comm->forward_comm(this);
 }
 
@@ -79,7 +80,8 @@ int FixNVESphereMidpoint::pack_forward_comm(int n, int *list, double *buf, int /
 {
   int m = 0;
   for (int k = 0; k < n; k++)
-    for (int d = 0; d < 3; d++) buf[m++] = state[list[k]][6 + d];
+    for (int d = 0; d < 3; d++)
+      buf[m++] = state[list[k]][6 + d];
   return m;
 }
 
@@ -87,7 +89,8 @@ void FixNVESphereMidpoint::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
   for (int i = first; i < first + n; i++)
-    for (int d = 0; d < 3; d++) state[i][6 + d] = buf[m++];
+    for (int d = 0; d < 3; d++)
+      state[i][6 + d] = buf[m++];
 }
 
 void FixNVESphereMidpoint::init()
@@ -118,7 +121,8 @@ void FixNVESphereMidpoint::initial_integrate(int /*vflag*/)
     if (!(mask[i] & groupbit)) continue;
     double *s = state[i];
     if (s[FIRST_STEP] != 0.0)    // f holds the set-up forces of this run
-      for (int d = 0; d < 3; d++) x[i][d] += 0.125 * dt * dt * f[i][d] / rmass[i];
+      for (int d = 0; d < 3; d++)
+        x[i][d] += 0.125 * dt * dt * f[i][d] / rmass[i];
     for (int d = 0; d < 3; d++) {
       s[6 + d] = v[i][d];
       s[9 + d] = omega[i][d];
@@ -157,7 +161,7 @@ void FixNVESphereMidpoint::final_integrate()
 
 double FixNVESphereMidpoint::memory_usage()
 {
-  return (double) atom->nmax * NVALUES * sizeof(double);
+  return (double)atom->nmax * NVALUES * sizeof(double);
 }
 
 void FixNVESphereMidpoint::grow_arrays(int nmax)
@@ -183,13 +187,15 @@ void FixNVESphereMidpoint::set_arrays(int i)
 
 int FixNVESphereMidpoint::pack_exchange(int i, double *buf)
 {
-  for (int k = 0; k < NVALUES; k++) buf[k] = state[i][k];
+  for (int k = 0; k < NVALUES; k++)
+    buf[k] = state[i][k];
   return NVALUES;
 }
 
 int FixNVESphereMidpoint::unpack_exchange(int nlocal, double *buf)
 {
-  for (int k = 0; k < NVALUES; k++) state[nlocal][k] = buf[k];
+  for (int k = 0; k < NVALUES; k++)
+    state[nlocal][k] = buf[k];
   return NVALUES;
 }
 
@@ -198,7 +204,8 @@ int FixNVESphereMidpoint::unpack_exchange(int nlocal, double *buf)
 int FixNVESphereMidpoint::pack_restart(int i, double *buf)
 {
   buf[0] = RESTART_SIZE;
-  for (int k = 0; k < 6; k++) buf[1 + k] = state[i][k];
+  for (int k = 0; k < 6; k++)
+    buf[1 + k] = state[i][k];
   buf[7] = state[i][FIRST_STEP];
   return RESTART_SIZE;
 }
@@ -207,9 +214,11 @@ void FixNVESphereMidpoint::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
   int m = 0;
-  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  for (int k = 0; k < nth; k++)
+    m += static_cast<int>(extra[nlocal][m]);
   const int count = static_cast<int>(extra[nlocal][m++]);
-  for (int k = 0; k < 6; k++) state[nlocal][k] = extra[nlocal][m++];
+  for (int k = 0; k < 6; k++)
+    state[nlocal][k] = extra[nlocal][m++];
   state[nlocal][FIRST_STEP] = count > 7 ? extra[nlocal][m] : 0.0;    // older files: 7 values
 }
 

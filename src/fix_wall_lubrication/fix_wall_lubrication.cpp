@@ -34,8 +34,7 @@ namespace lub = lubricated;
 
 static constexpr const char *STYLE = "Fix wall/lubrication";
 
-FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), contact_mass(lmp)
+FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), contact_mass(lmp)
 {
   ContactMass::watch_setforce(lmp);    // again after a `clear`
   if (!atom->radius_flag || !atom->rmass_flag)
@@ -49,11 +48,9 @@ FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) :
   std::vector<std::string> words(arg + 3, arg + iwall);
   const std::string problem = lub::parse_coefficients(words, 0, coeffs);
   if (!problem.empty()) error->all(FLERR, "{}: {}", STYLE, problem);
-  if (iwall == narg)
-    error->all(FLERR, "{}: missing wall style (expected xplane, yplane or zplane lo hi)", STYLE);
+  if (iwall == narg) error->all(FLERR, "{}: missing wall style (expected xplane, yplane or zplane lo hi)", STYLE);
   if (iwall + 3 > narg) error->all(FLERR, "{}: {} needs lo and hi positions", STYLE, arg[iwall]);
-  if (iwall + 3 < narg)
-    error->all(FLERR, "{}: unknown keyword '{}' after the wall positions", STYLE, arg[iwall + 3]);
+  if (iwall + 3 < narg) error->all(FLERR, "{}: unknown keyword '{}' after the wall positions", STYLE, arg[iwall + 3]);
 
   axis = arg[iwall][0] - 'x';
   if (axis == 2 && domain->dimension == 2) error->all(FLERR, "{}: zplane is not allowed in 2d", STYLE);
@@ -66,8 +63,7 @@ FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) :
     hi = utils::numeric(FLERR, arg[iwall + 2], false, lmp);
   }
   if (!has_lo && !has_hi) error->all(FLERR, "{}: both walls are NULL", STYLE);
-  if (has_lo && has_hi && lo >= hi)
-    error->all(FLERR, "{}: lo = {} must be below hi = {}", STYLE, lo, hi);
+  if (has_lo && has_hi && lo >= hi) error->all(FLERR, "{}: lo = {} must be below hi = {}", STYLE, lo, hi);
 
   scalar_flag = 1;    // elastic energy stored in the wall springs
   vector_flag = 1;    // total force of the walls on the group
@@ -79,14 +75,17 @@ FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) :
   dynamic_group_allow = 1;
 
   if (coeffs.tangential() && !(atom->omega_flag && atom->torque_flag))
-    error->all(FLERR, "{} with friction, rolling or shearfilm requires per-atom omega and torque "
-               "(atom_style sphere)", STYLE);
+    error->all(FLERR,
+               "{} with friction, rolling or shearfilm requires per-atom omega and torque "
+               "(atom_style sphere)",
+               STYLE);
   if (keeps_history()) {
     restart_peratom = 1;
     create_attribute = 1;
     maxexchange = HISTORY_SIZE;
     grow_arrays(atom->nmax);
-    for (int i = 0; i < atom->nmax; i++) set_arrays(i);
+    for (int i = 0; i < atom->nmax; i++)
+      set_arrays(i);
     atom->add_callback(Atom::GROW);
     atom->add_callback(Atom::RESTART);
   }
@@ -113,7 +112,8 @@ void FixWallLubrication::init()
   if (comm->me == 0) {
     utils::logmesg(lmp, "{}: {}\n", STYLE, check.description);
     if (!check.tangential.empty()) utils::logmesg(lmp, "{}: {}\n", STYLE, check.tangential);
-    for (const std::string &w : check.warnings) error->warning(FLERR, "{}: {}", STYLE, w);
+    for (const std::string &w : check.warnings)
+      error->warning(FLERR, "{}: {}", STYLE, w);
   }
   reset_dt();
   // Under fix nve/sphere/midpoint the step-exact integration uses the velocity over the
@@ -125,8 +125,10 @@ void FixWallLubrication::init()
   contact_mass.init(STYLE, !pair);    // the pair style logs them where there is one
   for (int i = 0; i < atom->nlocal; i++)
     if ((atom->mask[i] & groupbit) && !(atom->radius[i] > 0.0))
-      error->one(FLERR, "{}: atom {} has diameter {} (allowed: > 0; a point particle has no contact "
-                 "or film)", STYLE, atom->tag[i], 2.0 * atom->radius[i]);
+      error->one(FLERR,
+                 "{}: atom {} has diameter {} (allowed: > 0; a point particle has no contact "
+                 "or film)",
+                 STYLE, atom->tag[i], 2.0 * atom->radius[i]);
   films_pending = false;
 }
 
@@ -151,14 +153,18 @@ void FixWallLubrication::pre_force(int /*vflag*/)
 
 void FixWallLubrication::setup(int /*vflag*/)
 {
-  if (model.lubrication.active()) apply_films();
-  else compute_walls(false);
+  if (model.lubrication.active())
+    apply_films();
+  else
+    compute_walls(false);
 }
 
 void FixWallLubrication::post_force(int /*vflag*/)
 {
-  if (model.lubrication.active()) apply_films();
-  else compute_walls(false);
+  if (model.lubrication.active())
+    apply_films();
+  else
+    compute_walls(false);
 }
 
 // Minimisation: the walls in one go, films as each contact's own cap leaves them.
@@ -175,7 +181,8 @@ void FixWallLubrication::min_post_force(int /*vflag*/)
 void FixWallLubrication::add_film_loads(double *load, int nlocal) const
 {
   if (!films_pending) return;
-  for (int i = 0; i < nlocal; i++) load[i] += film_load[i];
+  for (int i = 0; i < nlocal; i++)
+    load[i] += film_load[i];
 }
 
 // Every atom of the group counts as near each wet wall: the bound of a wall contact is small
@@ -189,8 +196,8 @@ void FixWallLubrication::add_film_share_bounds(double *bound, int nlocal) const
   const bool shear_film = tmodel.film_active();    // no bound on its share yet: 1
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
-      bound[i] += sides *
-          (shear_film ? 1.0 : lub::film_share_bound(model.lubrication, radius[i], rmass[i], update->dt));
+      bound[i] +=
+          sides * (shear_film ? 1.0 : lub::film_share_bound(model.lubrication, radius[i], rmass[i], update->dt));
 }
 
 // The deferred wall films, scaled by the atoms' film budget: the pair style's where it keeps
@@ -235,7 +242,8 @@ void FixWallLubrication::compute_walls(bool defer_films)
   const lub::Evaluation when = lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
   const bool tangential_on = tmodel.active();
 
-  for (double &s : local_sums) s = 0.0;
+  for (double &s : local_sums)
+    s = 0.0;
   sums_reduced = false;
   films_pending = defer_films = defer_films && model.lubrication.active();
   shear_pending = defer_films && tmodel.film_active();
@@ -244,17 +252,17 @@ void FixWallLubrication::compute_walls(bool defer_films)
     film_load.assign(nlocal, 0.0);
   }
   if (shear_pending) shear_film.assign(6 * static_cast<std::size_t>(nlocal), 0.0);
-  const double kick_time = lub::film_kick_time(update->dt, when != lub::Evaluation::step,
-                                               when == lub::Evaluation::midpoint_start);
+  const double kick_time =
+      lub::film_kick_time(update->dt, when != lub::Evaluation::step, when == lub::Evaluation::midpoint_start);
   // Both walls on atom i of contact mass `mass`.
-  auto walls_of_atom = [&](int i, double mass) __attribute__((always_inline)) {
+  auto walls_of_atom = [&](int i, double mass) __attribute__((always_inline))
+  {
     const double r = radius[i];
     // side = +1: lo wall, normal along +axis; side = -1: hi wall, normal along -axis.
     for (int side = 1; side >= -1; side -= 2) {
       if (side == 1 ? !has_lo : !has_hi) continue;
       const double gap = side * (x[i][axis] - (side == 1 ? lo : hi)) - r;
-      const double u_n =
-          side * (midpoint && model.exact ? midpoint->step_velocity(i)[axis] : v[i][axis]);
+      const double u_n = side * (midpoint && model.exact ? midpoint->step_velocity(i)[axis] : v[i][axis]);
       if (!model.acts(gap, r, u_n)) {
         if (history && history[i][(side == 1 ? 0 : HISTORY_PER_WALL) + 3] != 0.0)
           for (int k = 0; k < HISTORY_PER_WALL; k++)
@@ -278,11 +286,11 @@ void FixWallLubrication::compute_walls(bool defer_films)
         // The shear film deferred with the normal one: its force and torque (shear, 6) and
         // share (shear[6]); the contact's share the larger of the two (film_budget.h).
         double shear[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-        tangential(i, side, gap, u_n, fn.contact, mass, ft, torque, kick_time,
-                   shear_pending ? shear : nullptr);
+        tangential(i, side, gap, u_n, fn.contact, mass, ft, torque, kick_time, shear_pending ? shear : nullptr);
         if (shear_pending) {
           film_load[i] += lub::contact_film_share(share, shear[6]);
-          for (int d = 0; d < 6; d++) shear_film[6 * i + d] += shear[d];
+          for (int d = 0; d < 6; d++)
+            shear_film[6 * i + d] += shear[d];
         }
         for (int d = 0; d < 3; d++) {
           f[i][d] += ft[d];
@@ -312,17 +320,16 @@ void FixWallLubrication::compute_walls(bool defer_films)
 // rolling resistance with the sphere's own inertia). shear (7 doubles, or nullptr): the shear
 // film is left out of force and torque and returned there instead (force, torque, and its share
 // of the film budget for this kick time, film_budget.h).
-void FixWallLubrication::tangential(int i, int side, double gap, double u_n, double normal_force,
-                                    double mass, double *force, double *torque, double kick_time,
-                                    double *shear)
+void FixWallLubrication::tangential(int i, int side, double gap, double u_n, double normal_force, double mass,
+                                    double *force, double *torque, double kick_time, double *shear)
 {
   const double r = atom->radius[i], m = atom->rmass[i];
   const double *v = atom->v[i], *w = atom->omega[i];
   lub::Vec3 n;
   (axis == 0 ? n.x : axis == 1 ? n.y : n.z) = side;
   const lub::Vec3 omega{w[0], w[1], w[2]};
-  const lub::Vec3 s = lub::tangential_part(
-      lub::minus(lub::Vec3{v[0], v[1], v[2]}, lub::cross(lub::scaled(omega, r), n)), n);
+  const lub::Vec3 s =
+      lub::tangential_part(lub::minus(lub::Vec3{v[0], v[1], v[2]}, lub::cross(lub::scaled(omega, r), n)), n);
   const double m_t = lub::tangential_mass_ratio * mass;
 
   lub::Vec3 f;
@@ -339,8 +346,7 @@ void FixWallLubrication::tangential(int i, int side, double gap, double u_n, dou
   }
   if (tmodel.film_active()) {
     const lub::Vec3 fs = lub::shear_film_force(tmodel, s, gap / r, model.lubrication.activation_for(r),
-                                               model.lubrication.eps_saturation,
-                                               model.lubrication.eps_release, r, m_t);
+                                               model.lubrication.eps_saturation, model.lubrication.eps_release, r, m_t);
     if (shear) {
       const lub::Vec3 nxfs = lub::cross(n, fs);
       shear[0] = fs.x, shear[1] = fs.y, shear[2] = fs.z;
@@ -365,30 +371,35 @@ void FixWallLubrication::grow_arrays(int nmax)
 
 void FixWallLubrication::copy_arrays(int i, int j, int /*delflag*/)
 {
-  for (int k = 0; k < HISTORY_SIZE; k++) history[j][k] = history[i][k];
+  for (int k = 0; k < HISTORY_SIZE; k++)
+    history[j][k] = history[i][k];
 }
 
 void FixWallLubrication::set_arrays(int i)
 {
-  for (int k = 0; k < HISTORY_SIZE; k++) history[i][k] = 0.0;
+  for (int k = 0; k < HISTORY_SIZE; k++)
+    history[i][k] = 0.0;
 }
 
 int FixWallLubrication::pack_exchange(int i, double *buf)
 {
-  for (int k = 0; k < HISTORY_SIZE; k++) buf[k] = history[i][k];
+  for (int k = 0; k < HISTORY_SIZE; k++)
+    buf[k] = history[i][k];
   return HISTORY_SIZE;
 }
 
 int FixWallLubrication::unpack_exchange(int nlocal, double *buf)
 {
-  for (int k = 0; k < HISTORY_SIZE; k++) history[nlocal][k] = buf[k];
+  for (int k = 0; k < HISTORY_SIZE; k++)
+    history[nlocal][k] = buf[k];
   return HISTORY_SIZE;
 }
 
 int FixWallLubrication::pack_restart(int i, double *buf)
 {
   buf[0] = HISTORY_SIZE + 1;
-  for (int k = 0; k < HISTORY_SIZE; k++) buf[k + 1] = history[i][k];
+  for (int k = 0; k < HISTORY_SIZE; k++)
+    buf[k + 1] = history[i][k];
   return HISTORY_SIZE + 1;
 }
 
@@ -396,8 +407,10 @@ void FixWallLubrication::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
   int m = 0;
-  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
-  for (int k = 0; k < HISTORY_SIZE; k++) history[nlocal][k] = extra[nlocal][m + 1 + k];
+  for (int k = 0; k < nth; k++)
+    m += static_cast<int>(extra[nlocal][m]);
+  for (int k = 0; k < HISTORY_SIZE; k++)
+    history[nlocal][k] = extra[nlocal][m + 1 + k];
 }
 
 int FixWallLubrication::size_restart(int /*i*/)

@@ -61,11 +61,11 @@ class FixWallLubrication : public Fix {
   static constexpr int HISTORY_PER_WALL = 4, HISTORY_SIZE = 2 * HISTORY_PER_WALL;
   double **history = nullptr;
   bool keeps_history() const { return coeffs.friction > 0.0; }
-  void tangential(int i, int side, double gap, double u_n, double normal_force, double mass,
-                  double *force, double *torque, double kick_time = 0.0, double *shear = nullptr);
-  int axis = -1;                  // 0, 1, 2 for xplane, yplane, zplane
+  void tangential(int i, int side, double gap, double u_n, double normal_force, double mass, double *force,
+                  double *torque, double kick_time = 0.0, double *shear = nullptr);
+  int axis = -1;    // 0, 1, 2 for xplane, yplane, zplane
   bool has_lo = false, has_hi = false;
-  double lo = 0.0, hi = 0.0;      // wall positions (box units)
+  double lo = 0.0, hi = 0.0;                      // wall positions (box units)
   double local_sums[4] = {0.0, 0.0, 0.0, 0.0};    // energy, force on the group x y z
   double global_sums[4] = {0.0, 0.0, 0.0, 0.0};
   bool sums_reduced = false;

@@ -28,7 +28,7 @@ namespace {
 // LIGGGHTS registers its fix styles at compile time, in Modify's private style map. This fix is
 // added to that map at run time, through the one access C++ grants to private members: a
 // pointer to member named in an explicit instantiation.
-using FixCreator = LAMMPS_NS::Fix *(*) (LAMMPS_NS::LAMMPS *, int, char **);
+using FixCreator = LAMMPS_NS::Fix *(*)(LAMMPS_NS::LAMMPS *, int, char **);
 using FixMap = std::map<std::string, FixCreator>;
 using FixMapMember = FixMap *LAMMPS_NS::Modify::*;
 
@@ -45,8 +45,7 @@ LAMMPS_NS::Fix *create_fix(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg)
 
 }    // namespace
 
-FixLubricatedFilmBudget::FixLubricatedFilmBudget(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg)
+FixLubricatedFilmBudget::FixLubricatedFilmBudget(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
 {
   comm_forward = network_values;    // scales (1), network sums (8)
   comm_reverse = network_values;    // loads (1), force corrections (3), network sums (8)
@@ -161,7 +160,8 @@ void FixLubricatedFilmBudget::decide_skip()
   // A margin for the rounding of the film's integral (film_budget.h, ~1e-12 relative).
   constexpr double below_one = 1.0 - 1e-6;
   int over = 0;
-  for (int i = 0; i < nlocal; i++) over |= bound[i] > below_one;
+  for (int i = 0; i < nlocal; i++)
+    over |= bound[i] > below_one;
   int any_over = 0;
   MPI_Allreduce(&over, &any_over, 1, MPI_INT, MPI_MAX, world);
   films_can_exceed_ = any_over != 0;
@@ -236,7 +236,8 @@ void FixLubricatedFilmBudget::finish_films()
   }
   double **f = atom->f;
   for (int i = 0; i < nlocal; i++)
-    for (int d = 0; d < 3; d++) f[i][d] += correction_[3 * i + d];
+    for (int d = 0; d < 3; d++)
+      f[i][d] += correction_[3 * i + d];
 }
 
 // Forward: scales (1 per atom) or network sums (network_values); the return is per atom.
@@ -248,7 +249,8 @@ int FixLubricatedFilmBudget::pack_comm(int n, int *list, double *buf, int, int *
                   buf + network_values * k);
     return network_values;
   }
-  for (int k = 0; k < n; k++) buf[k] = scale_[list[k]];
+  for (int k = 0; k < n; k++)
+    buf[k] = scale_[list[k]];
   return 1;
 }
 
@@ -258,15 +260,17 @@ void FixLubricatedFilmBudget::unpack_comm(int n, int first, double *buf)
     std::copy_n(buf, network_values * n, &network_sums_[network_values * static_cast<size_t>(first)]);
     return;
   }
-  for (int k = 0; k < n; k++) scale_[first + k] = buf[k];
+  for (int k = 0; k < n; k++)
+    scale_[first + k] = buf[k];
 }
 
 // Reverse: loads (1), force corrections (3) or network sums, added on the owners.
 int FixLubricatedFilmBudget::pack_reverse_comm(int n, int first, double *buf)
 {
   const int width = exchange_ == Exchange::load ? 1 : exchange_ == Exchange::correction ? 3 : network_values;
-  const double *values = exchange_ == Exchange::load ? load_.data()
-      : exchange_ == Exchange::correction ? correction_.data() : network_sums_.data();
+  const double *values = exchange_ == Exchange::load         ? load_.data()
+                         : exchange_ == Exchange::correction ? correction_.data()
+                                                             : network_sums_.data();
   std::copy_n(values + width * static_cast<size_t>(first), width * n, buf);
   return width;
 }
@@ -274,10 +278,12 @@ int FixLubricatedFilmBudget::pack_reverse_comm(int n, int first, double *buf)
 void FixLubricatedFilmBudget::unpack_reverse_comm(int n, int *list, double *buf)
 {
   const int width = exchange_ == Exchange::load ? 1 : exchange_ == Exchange::correction ? 3 : network_values;
-  double *values = exchange_ == Exchange::load ? load_.data()
-      : exchange_ == Exchange::correction ? correction_.data() : network_sums_.data();
+  double *values = exchange_ == Exchange::load         ? load_.data()
+                   : exchange_ == Exchange::correction ? correction_.data()
+                                                       : network_sums_.data();
   for (int k = 0; k < n; k++)
-    for (int q = 0; q < width; q++) values[width * static_cast<size_t>(list[k]) + q] += buf[width * k + q];
+    for (int q = 0; q < width; q++)
+      values[width * static_cast<size_t>(list[k]) + q] += buf[width * k + q];
 }
 
 // The contacts' per-atom sums on every copy of each atom, then the bounds of each contact
@@ -290,9 +296,11 @@ void FixLubricatedFilmBudget::check_network()
   if (network_sums_.size() < nv * static_cast<size_t>(nall)) network_sums_.resize(nv * static_cast<size_t>(atom->nmax));
   std::fill(network_sums_.begin(), network_sums_.begin() + nv * static_cast<size_t>(nall), 0.0);
   for (const NetworkContact &c : network_) {
-    lubricated::add_network_contact(&network_sums_[nv * c.i], network_load_[c.type_pair], network_bound_[c.type_pair], c.m_e, c.n);
+    lubricated::add_network_contact(&network_sums_[nv * c.i], network_load_[c.type_pair], network_bound_[c.type_pair],
+                                    c.m_e, c.n);
     if (newton_pair_ || c.j < nlocal)
-      lubricated::add_network_contact(&network_sums_[nv * c.j], network_load_[c.type_pair], network_bound_[c.type_pair], c.m_e, c.n);
+      lubricated::add_network_contact(&network_sums_[nv * c.j], network_load_[c.type_pair], network_bound_[c.type_pair],
+                                      c.m_e, c.n);
   }
   exchange_ = Exchange::network_sums;
   if (newton_pair_) comm->reverse_comm_fix(this);

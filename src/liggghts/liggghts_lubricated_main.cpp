@@ -10,7 +10,7 @@ extern "C" const char *lubricated_liggghts_version();
 int main(int argc, char **argv)
 {
   MPI_Init(&argc, &argv);
-  (void) lubricated_liggghts_version();    // keeps the model library linked
+  (void)lubricated_liggghts_version();    // keeps the model library linked
   LAMMPS_NS::LAMMPS *lmp = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
   lmp->input->file();
   delete lmp;

@@ -57,8 +57,7 @@ inline std::string with_property_names(std::string message)
       const bool start = pos == 0 || !std::isalnum(static_cast<unsigned char>(message[pos - 1]));
       const size_t end = pos + key.size();
       if (start && message.compare(pos, key.size(), key) == 0 &&
-          (end == message.size() || !(std::isalnum(static_cast<unsigned char>(message[end])) ||
-                                      message[end] == '_'))) {
+          (end == message.size() || !(std::isalnum(static_cast<unsigned char>(message[end])) || message[end] == '_'))) {
         out += p.property;
         pos = end;
         replaced = true;
@@ -81,8 +80,8 @@ inline bool read_scalar(LAMMPS_NS::Modify *modify, const char *name, const char 
 }
 
 // Coefficients per type pair, index i * (ntypes + 1) + j; message is set on bad input.
-inline std::vector<Coefficients> read_coefficients(LAMMPS_NS::Modify *modify, int ntypes,
-                                                   const char *caller, std::string &message)
+inline std::vector<Coefficients> read_coefficients(LAMMPS_NS::Modify *modify, int ntypes, const char *caller,
+                                                   std::string &message)
 {
   message.clear();
   std::vector<Coefficients> table((ntypes + 1) * (ntypes + 1));
@@ -106,8 +105,8 @@ inline std::vector<Coefficients> read_coefficients(LAMMPS_NS::Modify *modify, in
       c.e_dry = restitution->compute_array(i - 1, j - 1);
       const std::string error = validate_given(c, given);    // the pair_coeff checks
       if (!error.empty()) {
-        message = std::string(caller) + ": types " + std::to_string(i) + " " + std::to_string(j) +
-            ": " + with_property_names(error);
+        message = std::string(caller) + ": types " + std::to_string(i) + " " + std::to_string(j) + ": " +
+                  with_property_names(error);
         return table;
       }
       table[i * (ntypes + 1) + j] = c;
@@ -115,8 +114,8 @@ inline std::vector<Coefficients> read_coefficients(LAMMPS_NS::Modify *modify, in
   return table;
 }
 
-inline std::vector<NormalModel> build_models(const std::vector<Coefficients> &table, int ntypes,
-                                             bool wall, double dt, std::string &message)
+inline std::vector<NormalModel> build_models(const std::vector<Coefficients> &table, int ntypes, bool wall, double dt,
+                                             std::string &message)
 {
   message.clear();
   std::vector<NormalModel> models(table.size());
@@ -128,8 +127,7 @@ inline std::vector<NormalModel> build_models(const std::vector<Coefficients> &ta
         message = "model lubricated: " + with_property_names(error);
         return models;
       }
-      models[i * (ntypes + 1) + j] =
-          make_normal_model(c, wall ? Partner::wall : Partner::particle, dt);
+      models[i * (ntypes + 1) + j] = make_normal_model(c, wall ? Partner::wall : Partner::particle, dt);
     }
   return models;
 }
@@ -138,8 +136,7 @@ inline std::vector<NormalModel> build_models(const std::vector<Coefficients> &ta
 // distance factor: r_i + r_j for pairs (reach eps_al R with R = 2 r_i r_j / (r_i + r_j),
 // at most eps_al / 2 of r_i + r_j), r_i for walls. A grid spacing needs the smallest radius;
 // returns -1 when it is unknown (no particles yet).
-inline double reach_fraction(const std::vector<Coefficients> &table, int ntypes, bool wall,
-                             double r_min)
+inline double reach_fraction(const std::vector<Coefficients> &table, int ntypes, bool wall, double r_min)
 {
   double reach = 0.0;
   for (int i = 1; i <= ntypes; i++)
@@ -149,8 +146,7 @@ inline double reach_fraction(const std::vector<Coefficients> &table, int ntypes,
       double fraction = wall ? c.eps_activation : 0.5 * c.eps_activation;
       if (c.grid_spacing > 0.0) {    // reach 0.75 dx whatever the radii
         if (!(r_min > 0.0)) return -1.0;
-        fraction = lubricated::Lubrication::grid_activation * c.grid_spacing /
-            (wall ? r_min : 2.0 * r_min);
+        fraction = lubricated::Lubrication::grid_activation * c.grid_spacing / (wall ? r_min : 2.0 * r_min);
       }
       reach = std::max(reach, fraction);
     }
@@ -160,10 +156,11 @@ inline double reach_fraction(const std::vector<Coefficients> &table, int ntypes,
 inline std::string missed_approach_warning(double u_n, double dt, double factor)
 {
   return "model lubricated: an impact at normal speed " + detail::number(std::fabs(u_n)) +
-      " started farther away than the contact distance (contact_distance_factor " +
-      detail::number(factor) + ") one step before; its first contact step is integrated "
-      "approximately. Raise neigh_modify contact_distance_factor so that (factor - 1) (r_i + r_j) "
-      "exceeds the largest approach per step (" + detail::number(std::fabs(u_n) * dt) + ")";
+         " started farther away than the contact distance (contact_distance_factor " + detail::number(factor) +
+         ") one step before; its first contact step is integrated "
+         "approximately. Raise neigh_modify contact_distance_factor so that (factor - 1) (r_i + r_j) "
+         "exceeds the largest approach per step (" +
+         detail::number(std::fabs(u_n) * dt) + ")";
 }
 
 }    // namespace liggghts

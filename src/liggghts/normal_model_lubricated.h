@@ -69,8 +69,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   void beginPass(SurfacesIntersectData &, ForceData &, ForceData &)
   {
     if (!budget_ || is_wall_) return;
-    if (budget_on_ && (neighbor->ago == 0 || update->setupflag || update->dt != bound_dt_))
-      bound_film_shares();
+    if (budget_on_ && (neighbor->ago == 0 || update->setupflag || update->dt != bound_dt_)) bound_film_shares();
     budget_->begin_pass();
   }
   void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
@@ -92,11 +91,12 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     // (factor - 1) (r_i + r_j) (pairs) or (factor - 1) r_i (walls).
     const double none = 1e300;
     double r_min = none;
-    for (int i = 0; i < atom->nlocal; i++) r_min = std::min(r_min, atom->radius[i]);
+    for (int i = 0; i < atom->nlocal; i++)
+      r_min = std::min(r_min, atom->radius[i]);
     double r_min_all = none;
     MPI_Allreduce(&r_min, &r_min_all, 1, MPI_DOUBLE, MPI_MIN, world);
-    const double reach = lubricated::liggghts::reach_fraction(coefficients_, ntypes_, is_wall_,
-                                                              r_min_all < none ? r_min_all : 0.0);
+    const double reach =
+        lubricated::liggghts::reach_fraction(coefficients_, ntypes_, is_wall_, r_min_all < none ? r_min_all : 0.0);
     if (reach < 0.0)
       error->all(FLERR, "model lubricated: lubricatedGridSpacing needs the particles to exist "
                         "before the run (insert them first, or give lubricatedActivation)");
@@ -107,8 +107,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     report_setup(caller);
   }
 
-  inline void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces,
-                                ForceData &j_forces)
+  inline void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
   {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
     if (update->dt != dt_) build_models();
@@ -116,8 +115,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     const lubricated::NormalModel &model = models_[t];
     const double gap = -sidata.deltan, u_n = sidata.vn;
     const double m_e = is_wall_ ? sidata.meff : pair_reduced_mass(sidata.i, sidata.j);
-    const double radius = is_wall_ ? sidata.radi
-                                   : lubricated::lubrication_radius_pair(sidata.radi, sidata.radj);
+    const double radius = is_wall_ ? sidata.radi : lubricated::lubrication_radius_pair(sidata.radi, sidata.radj);
     if (!update->setupflag && gap - u_n * dt_ >= (neighbor->contactDistanceFactor - 1.0) * sidata.radsum)
       missed_approach(u_n);    // entered from beyond the close range: no step before was seen
     const lubricated::NormalForce fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation());
@@ -136,8 +134,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     if (fn.lubrication != 0.0 && budget_on_ && budget_->active())
       record_film(sidata, fn.lubrication * (is_wall_ ? sidata.area_ratio : 1.0), sidata.en, m_e, u_n);
     // In overlap a step ago too: a sustained contact of the network check.
-    if (!is_wall_ && budget_ && budget_->network_due() && budget_->network_load_matters(t) &&
-        gap - u_n * dt_ < 0.0) {
+    if (!is_wall_ && budget_ && budget_->network_due() && budget_->network_load_matters(t) && gap - u_n * dt_ < 0.0) {
       double m_i, m_j;
       contact_masses(sidata, m_i, m_j);
       if (std::isfinite(m_i) || std::isfinite(m_j))
@@ -157,8 +154,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     const double gap = r - scdata.radsum;
     const double *vi = scdata.v_i, *vj = scdata.v_j;
     const double u_n = (vi[0] - vj[0]) * en[0] + (vi[1] - vj[1]) * en[1] + (vi[2] - vj[2]) * en[2];
-    const double radius = is_wall_ ? scdata.radi
-                                   : lubricated::lubrication_radius_pair(scdata.radi, scdata.radj);
+    const double radius = is_wall_ ? scdata.radi : lubricated::lubrication_radius_pair(scdata.radi, scdata.radj);
     if (!model.acts(gap, radius, u_n)) return;
     const double m_e = reduced_mass(scdata);
     const lubricated::NormalForce fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation());
@@ -244,17 +240,18 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     for (int i = 1; i <= ntypes_; i++)
       for (int j = is_wall_ ? wall_type : i; j <= (is_wall_ ? wall_type : ntypes_); j++) {
         if (j < 1 || j > ntypes_) continue;
-        const lubricated::SetupCheck check = lubricated::check_setup(
-            coefficients_[i * (ntypes_ + 1) + j], is_wall_ ? lubricated::Partner::wall : lubricated::Partner::particle,
-            update->dt);
-        const std::string line = std::string(caller) + " types " + std::to_string(i) + " " + std::to_string(j) +
-            ": " + check.description + "\n";
+        const lubricated::SetupCheck check =
+            lubricated::check_setup(coefficients_[i * (ntypes_ + 1) + j],
+                                    is_wall_ ? lubricated::Partner::wall : lubricated::Partner::particle, update->dt);
+        const std::string line = std::string(caller) + " types " + std::to_string(i) + " " + std::to_string(j) + ": " +
+                                 check.description + "\n";
         if (screen) fputs(line.c_str(), screen);
         if (logfile) fputs(line.c_str(), logfile);
         for (const std::string &w : check.warnings)
           warnings.insert(std::string(caller) + ": " + lubricated::liggghts::with_property_names(w));
       }
-    for (const std::string &w : warnings) error->warning(FLERR, w.c_str());
+    for (const std::string &w : warnings)
+      error->warning(FLERR, w.c_str());
   }
 
   // The pair's model creates the budget fix (and keeps it after the walls); a wall joins it when
@@ -262,13 +259,14 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   void join_film_budget(const char *caller)
   {
     double limit_pair = 0.0;
-    if (lubricated::liggghts::read_scalar(modify, "lubricatedLimitPair", caller, limit_pair) &&
-        limit_pair != 0.0 && limit_pair != 1.0)
+    if (lubricated::liggghts::read_scalar(modify, "lubricatedLimitPair", caller, limit_pair) && limit_pair != 0.0 &&
+        limit_pair != 1.0)
       fail(std::string(caller) + ": lubricatedLimitPair = " + lubricated::detail::number(limit_pair) +
            " must be 0 (the films of each sphere share its many-body budget, the default) or 1 "
            "(each film capped on its own)");
     bool wet = false;
-    for (const lubricated::Coefficients &c : coefficients_) wet = wet || c.wet();
+    for (const lubricated::Coefficients &c : coefficients_)
+      wet = wet || c.wet();
     std::vector<double> normal, bound;
     const bool network = network_loads(normal, bound);
     budget_ = lubricated::liggghts::FixLubricatedFilmBudget::find(lmp, !is_wall_ && (wet || network));
@@ -339,8 +337,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
         const int t = i * (ntypes_ + 1) + j;
         const lubricated::NormalModel &m = models_[t];
         normal[t] = lubricated::contact_load(m.step.stiffness_step, m.step.damping_step, dt_);
-        bound[t] = std::max(normal[t], lubricated::contact_load(m.contact.stiffness_per_mass,
-                                                                 m.contact.damping_per_mass, dt_));
+        bound[t] = std::max(normal[t],
+                            lubricated::contact_load(m.contact.stiffness_per_mass, m.contact.damping_per_mass, dt_));
         matters = matters || bound[t] > lubricated::network_check_load;
       }
     return matters;
@@ -351,8 +349,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   {
     const double kick = lubricated::film_kick_time(update->dt, update->setupflag != 0, false);
     const double f[3] = {film * en[0], film * en[1], film * en[2]};
-    budget_->add_film(scdata.i, is_wall_ ? -1 : scdata.j, f,
-                      lubricated::film_share(film, m_e, u_n, kick));
+    budget_->add_film(scdata.i, is_wall_ ? -1 : scdata.j, f, lubricated::film_share(film, m_e, u_n, kick));
   }
 
   // LIGGGHTS integrates with velocity Verlet (fix nve/sphere).
@@ -399,8 +396,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
 
   bool is_wall_;
   LAMMPS_NS::PairGran *pair_;
-  IContactHistorySetup *hsetup_;    // the pair style or the wall fix
-  double bound_dt_ = -1.0;          // the time step of the last share bounds
+  IContactHistorySetup *hsetup_;              // the pair style or the wall fix
+  double bound_dt_ = -1.0;                    // the time step of the last share bounds
   int integrate_bits_ = 0, hold_bits_ = 0;    // group bits: integrated, held (immovable())
   lubricated::liggghts::FixLubricatedFilmBudget *budget_ = nullptr;
   bool budget_on_ = false;

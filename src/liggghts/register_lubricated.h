@@ -13,14 +13,14 @@
 namespace lubricated {
 namespace liggghts {
 
-template <class Style> LIGGGHTS::PairStyles::IGranularPairStyle *
-create_pair(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::PairGran *parent, int64_t hash)
+template <class Style>
+LIGGGHTS::PairStyles::IGranularPairStyle *create_pair(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::PairGran *parent, int64_t hash)
 {
   return new LIGGGHTS::PairStyles::Granular<LIGGGHTS::ContactModels::ContactModel<Style>>(lmp, parent, hash);
 }
 
-template <class Style> LIGGGHTS::Walls::IGranularWall *
-create_wall(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::FixWallGran *parent, int64_t hash)
+template <class Style>
+LIGGGHTS::Walls::IGranularWall *create_wall(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::FixWallGran *parent, int64_t hash)
 {
   return new LIGGGHTS::Walls::Granular<LIGGGHTS::ContactModels::ContactModel<Style>>(lmp, parent, hash);
 }

@@ -21,8 +21,7 @@ struct Members {
 };
 
 Members members();
-template <IntMember X, IntMember Y, IntMember Z, DoubleMember VX, DoubleMember VY, DoubleMember VZ,
-          TextMember REGION>
+template <IntMember X, IntMember Y, IntMember Z, DoubleMember VX, DoubleMember VY, DoubleMember VZ, TextMember REGION>
 struct Access {
   friend Members members() { return Members{{X, Y, Z}, {VX, VY, VZ}, REGION}; }
 };

@@ -33,11 +33,12 @@ inline SetupCheck check_setup(const Coefficients &c, Partner partner, double dt)
                 detail::number(c.e_dry).c_str(), c.contact_time(dt), c.steps_per_contact(dt),
                 m.contact.stiffness_per_mass, m.contact.damping_per_mass);
   check.description = std::string(text) + (c.wet() ? "film mu_f = " + detail::number(c.viscosity) + ", " : "dry, ") +
-      (c.exact_contact ? "integration exact" : "integration sampled");
+                      (c.exact_contact ? "integration exact" : "integration sampled");
   if (c.tangential())
-    check.tangential = "friction mu_c = " + detail::number(c.friction) + ", e_t = " +
-        detail::number(c.tangential_restitution()) + ", rolling mu_r = " + detail::number(c.rolling_friction) +
-        ", shear film " + (c.wet() && c.shear_film() ? "on" : "off");
+    check.tangential = "friction mu_c = " + detail::number(c.friction) +
+                       ", e_t = " + detail::number(c.tangential_restitution()) +
+                       ", rolling mu_r = " + detail::number(c.rolling_friction) + ", shear film " +
+                       (c.wet() && c.shear_film() ? "on" : "off");
   return check;
 }
 

@@ -16,15 +16,15 @@
 namespace lubricated {
 
 struct Coefficients {
-  double e_dry = -1.0;              // dry restitution e_d, 0 < e_d <= 1
-  double n_contact = 8.0;           // contact duration in steps, 1...1e6 (used when t_contact == 0)
-  double t_contact = 0.0;           // contact duration in time units (> 0 overrides N_c)
-  double viscosity = 0.0;           // mu_f, 1e-100...1e100; 0 means dry: no lubrication code runs
-  double eps_activation = 0.0;      // eps_al (normalised activation gap)
-  double grid_spacing = 0.0;        // dx: eps_al = 0.75 dx / R instead of a fixed eps_al
-  double eps_saturation = 1e-3;     // eps_1, 1e-12 <= eps_1 < 1
-  double eps_release = -1e-2;       // eps_2
-  bool exact_contact = true;        // integration exact (contact_step.h) or sampled
+  double e_dry = -1.0;             // dry restitution e_d, 0 < e_d <= 1
+  double n_contact = 8.0;          // contact duration in steps, 1...1e6 (used when t_contact == 0)
+  double t_contact = 0.0;          // contact duration in time units (> 0 overrides N_c)
+  double viscosity = 0.0;          // mu_f, 1e-100...1e100; 0 means dry: no lubrication code runs
+  double eps_activation = 0.0;     // eps_al (normalised activation gap)
+  double grid_spacing = 0.0;       // dx: eps_al = 0.75 dx / R instead of a fixed eps_al
+  double eps_saturation = 1e-3;    // eps_1, 1e-12 <= eps_1 < 1
+  double eps_release = -1e-2;      // eps_2
+  bool exact_contact = true;       // integration exact (contact_step.h) or sampled
   // Tangential model (tangential.h); all off by default: a normal-only contact.
   double friction = 0.0;            // Coulomb coefficient mu_c >= 0; > 0 turns it on
   double e_tangential = -1.0;       // tangential restitution e_t in [0, 1]; < 0: e_d
@@ -44,12 +44,22 @@ struct Coefficients {
 
   void pack(double *buf) const
   {
-    const double v[packed_size] = {e_dry,          n_contact,    t_contact,      viscosity,
-                                   eps_activation, grid_spacing, eps_saturation, eps_release,
+    const double v[packed_size] = {e_dry,
+                                   n_contact,
+                                   t_contact,
+                                   viscosity,
+                                   eps_activation,
+                                   grid_spacing,
+                                   eps_saturation,
+                                   eps_release,
                                    exact_contact ? 1.0 : 0.0,
-                                   friction,       e_tangential, rolling_friction,
-                                   static_cast<double>(shearfilm), legendre};
-    for (int i = 0; i < packed_size; ++i) buf[i] = v[i];
+                                   friction,
+                                   e_tangential,
+                                   rolling_friction,
+                                   static_cast<double>(shearfilm),
+                                   legendre};
+    for (int i = 0; i < packed_size; ++i)
+      buf[i] = v[i];
   }
   void unpack(const double *buf)
   {
@@ -90,8 +100,7 @@ inline std::string number(double value)
 
 inline std::string range_error(const char *name, double value, const char *allowed)
 {
-  return std::string(name) + " = " + number(value) + " is out of range (allowed: " +
-      allowed + ")";
+  return std::string(name) + " = " + number(value) + " is out of range (allowed: " + allowed + ")";
 }
 
 }    // namespace detail
@@ -121,7 +130,10 @@ constexpr double smallest_saturation = 1e-12;
 
 namespace detail {
 
-inline bool within(double value, double lo, double hi) { return value >= lo && value <= hi; }
+inline bool within(double value, double lo, double hi)
+{
+  return value >= lo && value <= hi;
+}
 
 }    // namespace detail
 
@@ -143,8 +155,8 @@ inline std::string validate(const Coefficients &c)
   if (!(c.eps_saturation >= smallest_saturation && c.eps_saturation < 1.0))
     return range_error("saturation", c.eps_saturation, "1e-12 <= eps_1 < 1");
   if (!(c.eps_release < c.eps_saturation))
-    return "release = " + detail::number(c.eps_release) + " must be below saturation = " +
-        detail::number(c.eps_saturation) + " (eps_2 < eps_1 required)";
+    return "release = " + detail::number(c.eps_release) +
+           " must be below saturation = " + detail::number(c.eps_saturation) + " (eps_2 < eps_1 required)";
   if (!(c.friction >= 0.0)) return range_error("friction", c.friction, "mu_c >= 0");
   if (c.e_tangential != -1.0 && !(c.e_tangential >= 0.0 && c.e_tangential <= 1.0))
     return range_error("tangential", c.e_tangential, "0 <= e_t <= 1");
@@ -155,18 +167,17 @@ inline std::string validate(const Coefficients &c)
     if (!c.exact_contact) return "legendre needs integration exact";
     if (c.eps_release < 0.0)
       return "release = " + detail::number(c.eps_release) +
-          " is out of range with legendre (allowed: 0 <= eps_2 < eps_1; the calibrated contact "
-          "replaces the film in overlap)";
+             " is out of range with legendre (allowed: 0 <= eps_2 < eps_1; the calibrated contact "
+             "replaces the film in overlap)";
   }
   if (c.wet()) {
     if (c.grid_spacing != 0.0 && !within(c.grid_spacing, smallest_dimensional, largest_dimensional))
       return range_error("grid", c.grid_spacing, "1e-100 <= dx <= 1e100");
     if (c.grid_spacing == 0.0) {
-      if (c.eps_activation == 0.0)
-        return "viscosity > 0 requires the activation (eps_al) or grid (dx) keyword";
+      if (c.eps_activation == 0.0) return "viscosity > 0 requires the activation (eps_al) or grid (dx) keyword";
       if (!(c.eps_activation > c.eps_saturation && c.eps_activation <= 1.0))
         return "activation = " + detail::number(c.eps_activation) +
-            " is out of range (allowed: saturation eps_1 < eps_al <= 1)";
+               " is out of range (allowed: saturation eps_1 < eps_al <= 1)";
     }
   }
   return "";
@@ -175,8 +186,7 @@ inline std::string validate(const Coefficients &c)
 // Which of the keywords with alternatives or sentinel defaults were given (pair_coeff words,
 // or LIGGGHTS properties that exist).
 struct Given {
-  bool ncontact = false, tcontact = false, activation = false, grid = false, tangential = false,
-       release = false;
+  bool ncontact = false, tcontact = false, activation = false, grid = false, tangential = false, release = false;
 };
 
 // Defaults that depend on other keywords: with legendre the film ends at contact (eps_2 = 0),
@@ -202,13 +212,11 @@ inline std::string validate_given(const Coefficients &c, const Given &given)
 
 // Parses "e_d keyword value ..." from words[first..]; returns "" on success, else a message
 // naming the offending word. The result is validated.
-inline std::string parse_coefficients(const std::vector<std::string> &words, size_t first,
-                                      Coefficients &c)
+inline std::string parse_coefficients(const std::vector<std::string> &words, size_t first, Coefficients &c)
 {
   c = Coefficients();
   if (words.size() <= first) return "missing e_d (dry restitution coefficient)";
-  if (!detail::to_number(words[first], c.e_dry))
-    return "expected a number for e_d, got '" + words[first] + "'";
+  if (!detail::to_number(words[first], c.e_dry)) return "expected a number for e_d, got '" + words[first] + "'";
   Given given;
   for (size_t i = first + 1; i < words.size(); i += 2) {
     const std::string &key = words[i];
@@ -227,21 +235,32 @@ inline std::string parse_coefficients(const std::vector<std::string> &words, siz
       continue;
     }
     double *target = nullptr;
-    if (key == "ncontact") target = &c.n_contact, given.ncontact = true;
-    else if (key == "tcontact") target = &c.t_contact, given.tcontact = true;
-    else if (key == "viscosity") target = &c.viscosity;
-    else if (key == "activation") target = &c.eps_activation, given.activation = true;
-    else if (key == "grid") target = &c.grid_spacing, given.grid = true;
-    else if (key == "saturation") target = &c.eps_saturation;
-    else if (key == "release") target = &c.eps_release, given.release = true;
-    else if (key == "friction") target = &c.friction;
-    else if (key == "tangential") target = &c.e_tangential, given.tangential = true;
-    else if (key == "rolling") target = &c.rolling_friction;
-    else if (key == "legendre") target = &c.legendre;
+    if (key == "ncontact")
+      target = &c.n_contact, given.ncontact = true;
+    else if (key == "tcontact")
+      target = &c.t_contact, given.tcontact = true;
+    else if (key == "viscosity")
+      target = &c.viscosity;
+    else if (key == "activation")
+      target = &c.eps_activation, given.activation = true;
+    else if (key == "grid")
+      target = &c.grid_spacing, given.grid = true;
+    else if (key == "saturation")
+      target = &c.eps_saturation;
+    else if (key == "release")
+      target = &c.eps_release, given.release = true;
+    else if (key == "friction")
+      target = &c.friction;
+    else if (key == "tangential")
+      target = &c.e_tangential, given.tangential = true;
+    else if (key == "rolling")
+      target = &c.rolling_friction;
+    else if (key == "legendre")
+      target = &c.legendre;
     else
       return "unknown keyword '" + key +
-          "' (expected ncontact, tcontact, viscosity, activation, grid, saturation, release, "
-          "integration, friction, tangential, rolling, shearfilm or legendre)";
+             "' (expected ncontact, tcontact, viscosity, activation, grid, saturation, release, "
+             "integration, friction, tangential, rolling, shearfilm or legendre)";
     if (i + 1 >= words.size()) return "missing value for keyword " + key;
     if (!detail::to_number(words[i + 1], *target))
       return "expected a number for keyword " + key + ", got '" + words[i + 1] + "'";
@@ -258,16 +277,14 @@ inline std::string validate_time_step(const Coefficients &c, double dt)
   if (c.t_contact > 0.0) {
     const double steps = c.steps_per_contact(dt);
     if (!(steps >= 1.0))
-      return "tcontact = " + detail::number(c.t_contact) + " is shorter than the time step " +
-          detail::number(dt) + " (N_c = t_c / dt >= 1 required)";
+      return "tcontact = " + detail::number(c.t_contact) + " is shorter than the time step " + detail::number(dt) +
+             " (N_c = t_c / dt >= 1 required)";
     if (!(steps <= largest_steps_per_contact))
-      return "tcontact = " + detail::number(c.t_contact) + " is out of range with the time step " +
-          detail::number(dt) + ": N_c = t_c / dt = " + detail::number(steps) +
-          " (allowed: 1 <= N_c <= 1e6)";
+      return "tcontact = " + detail::number(c.t_contact) + " is out of range with the time step " + detail::number(dt) +
+             ": N_c = t_c / dt = " + detail::number(steps) + " (allowed: 1 <= N_c <= 1e6)";
   } else if (!detail::within(c.contact_time(dt), smallest_dimensional, largest_dimensional)) {
-    return "ncontact = " + detail::number(c.n_contact) + " is out of range with the time step " +
-        detail::number(dt) + ": t_c = N_c dt = " + detail::number(c.contact_time(dt)) +
-        " (allowed: 1e-100 <= t_c <= 1e100)";
+    return "ncontact = " + detail::number(c.n_contact) + " is out of range with the time step " + detail::number(dt) +
+           ": t_c = N_c dt = " + detail::number(c.contact_time(dt)) + " (allowed: 1e-100 <= t_c <= 1e100)";
   }
   return "";
 }
@@ -278,8 +295,7 @@ inline std::string time_step_warning(const Coefficients &c, double dt)
 {
   const double n = c.steps_per_contact(dt);
   if (n < 8.0 * (1.0 - 1e-12))
-    return "contact resolved with N_c = " + detail::number(n) +
-        " steps; the restitution drifts from e_d below N_c = 8";
+    return "contact resolved with N_c = " + detail::number(n) + " steps; the restitution drifts from e_d below N_c = 8";
   return "";
 }
 

@@ -110,8 +110,7 @@ constexpr int network_values = 8;
 
 // Adds contact k (normal load s_normal, bounding load s_bound = max(normal, tangential), reduced
 // mass m_e, unit normal n) to one of its spheres.
-inline void add_network_contact(double *sums, double s_normal, double s_bound, double reduced_mass,
-                                const double *n)
+inline void add_network_contact(double *sums, double s_normal, double s_bound, double reduced_mass, const double *n)
 {
   const double w = s_normal * reduced_mass;
   sums[0] += std::sqrt(s_bound * reduced_mass);
@@ -132,12 +131,12 @@ inline double network_upper_row(double s_bound, double reduced_mass, const doubl
 }
 
 // Lower bound of contact k (Rayleigh quotient of b_k): a mode grows if one is 4 or more.
-inline double network_lower_quotient(double s_normal, double reduced_mass, const double *n,
-                                     const double *sums_i, double m_i, const double *sums_j, double m_j)
+inline double network_lower_quotient(double s_normal, double reduced_mass, const double *n, const double *sums_i,
+                                     double m_i, const double *sums_j, double m_j)
 {
   auto nFn = [n](const double *s) {
     return s[1] * n[0] * n[0] + s[2] * n[1] * n[1] + s[3] * n[2] * n[2] +
-        2.0 * (s[4] * n[0] * n[1] + s[5] * n[0] * n[2] + s[6] * n[1] * n[2]);
+           2.0 * (s[4] * n[0] * n[1] + s[5] * n[0] * n[2] + s[6] * n[1] * n[2]);
   };
   const double own = s_normal * reduced_mass;
   return s_normal + reduced_mass * ((nFn(sums_i) - own) / (m_i * m_i) + (nFn(sums_j) - own) / (m_j * m_j));

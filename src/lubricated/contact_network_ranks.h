@@ -29,8 +29,7 @@ class NetworkScores {
   // Collective. False where nothing is to be said (stable, or likely unstable but already
   // warned); else fills `found`, asking describe(k, types[2], tags[2], contacts[2]) about the
   // worst contact k on the rank that holds it, and sets `warned` for a warning.
-  template <class Describe>
-  bool decide(MPI_Comm world, bool &warned, Describe describe, NetworkFinding &found) const
+  template <class Describe> bool decide(MPI_Comm world, bool &warned, Describe describe, NetworkFinding &found) const
   {
     Score reduced;
     MPI_Allreduce(&lower_, &reduced, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);

@@ -172,7 +172,6 @@ inline ContactStep make_contact_step(const SpringDashpot &sd, double dt)
   return cs;
 }
 
-
 // Gap after time t, starting in overlap or at contact (g <= 0) with rate v; once the gap
 // reopens the motion continues in free flight with the exit speed.
 // Gap after time t for a contact (g < 0) known to reopen within t: w s = atan2(-A, B) at the
@@ -199,8 +198,7 @@ inline double propagate_contact(const ContactStep &cs, double g, double v, doubl
 // steps where a contact starts the contact follows the motion after it (a film that stops
 // the pair before contact leaves no contact to predict).
 __attribute__((noinline)) inline double contact_acceleration(const ContactStep &cs, double g1, double u,
-                                                             const EntryLoss *loss = nullptr,
-                                                             double kick = 0.0)
+                                                             const EntryLoss *loss = nullptr, double kick = 0.0)
 {
   const double dt = cs.dt, a = cs.decay_rate, w = cs.omega;
   const double g0 = g1 - u * dt;
@@ -224,10 +222,8 @@ __attribute__((noinline)) inline double contact_acceleration(const ContactStep &
       };
       double evaluated_at;
       const double s = detail::falling_root(
-          excess, 0.0, dt, detail::table_lookup(cs.exit_guess, ContactStep::table_size, g1 / -g0),
-          evaluated_at);
-      const double v_exit = s < 0.5 * dt ? g1 / (dt - s)
-                                         : -std::exp(-a * s) * w * g0 / std::sin(w * s);
+          excess, 0.0, dt, detail::table_lookup(cs.exit_guess, ContactStep::table_size, g1 / -g0), evaluated_at);
+      const double v_exit = s < 0.5 * dt ? g1 / (dt - s) : -std::exp(-a * s) * w * g0 / std::sin(w * s);
       return (v_exit - u) / dt;
     }
   } else if (g0 >= 0.0) {
@@ -252,8 +248,7 @@ __attribute__((noinline)) inline double contact_acceleration(const ContactStep &
     const double guess_ratio = loss ? -g1 * -u / (loss->start_speed(-u) * g0) : -g1 / g0;
     double evaluated_at;
     const double s = detail::falling_root(
-        mismatch, 0.0, dt,
-        g0 > 0.0 ? detail::table_lookup(cs.entry_guess, ContactStep::table_size, guess_ratio) : dt,
+        mismatch, 0.0, dt, g0 > 0.0 ? detail::table_lookup(cs.entry_guess, ContactStep::table_size, guess_ratio) : dt,
         evaluated_at);
     {    // move decay_s, sin_s, cos_s from the last evaluated point to s (first order)
       const double shift = s - evaluated_at;
@@ -262,8 +257,8 @@ __attribute__((noinline)) inline double contact_acceleration(const ContactStep &
       sin_s += w * shift * cos_s;
       cos_s -= w * shift * sin_old;
     }
-    const double v_in = s < 0.5 * dt ? (loss ? -loss->start_speed(g0 / (dt - s)) : -g0 / (dt - s))
-                                     : g1 * w / (decay_s * sin_s);
+    const double v_in =
+        s < 0.5 * dt ? (loss ? -loss->start_speed(g0 / (dt - s)) : -g0 / (dt - s)) : g1 * w / (decay_s * sin_s);
     // The kick may stop the oscillator's own velocity, not reverse or speed it up (the film
     // was capped against the mean velocity of the last step, not this one).
     const double v1 = v_in * decay_s * (cos_s - a / w * sin_s);
@@ -335,8 +330,9 @@ __attribute__((noinline)) inline double contact_acceleration_at_midpoint_start(c
                                                                                double v, double drifted)
 {
   const double dt = cs.dt;
-  const double target = g >= 0.0 ? std::max(drifted, 0.0)
-      : drifted + propagate_contact(cs, g, v, detail::midpoint_start_time(cs, g, v)) - (g + 0.5 * v * dt);
+  const double target =
+      g >= 0.0 ? std::max(drifted, 0.0)
+               : drifted + propagate_contact(cs, g, v, detail::midpoint_start_time(cs, g, v)) - (g + 0.5 * v * dt);
   return 8.0 * (target - drifted) / (dt * dt);
 }
 

@@ -27,8 +27,8 @@ enum class DragLaw { stokes, schiller_naumann };
 enum class Hindrance { none, richardson_zaki, di_felice };
 
 struct DragModel {
-  double viscosity = 0.0;       // mu_f  [mass/(length time)]
-  double density = 0.0;         // rho_f [mass/length^3]
+  double viscosity = 0.0;    // mu_f  [mass/(length time)]
+  double density = 0.0;      // rho_f [mass/length^3]
   DragLaw law = DragLaw::schiller_naumann;
   Hindrance hindrance = Hindrance::none;
   double rz_exponent = 4.65;    // Richardson-Zaki n (Stokes regime value)
@@ -50,17 +50,17 @@ inline double drag_beta(const DragModel &m, double diameter, double slip_speed, 
 {
   const double eps = std::min(1.0, std::max(voidage, m.min_voidage));
   switch (m.hindrance) {
-    case Hindrance::none:
-      return single_sphere_beta(m, diameter, slip_speed);
-    case Hindrance::richardson_zaki:
-      return single_sphere_beta(m, diameter, slip_speed) * std::pow(eps, 1.0 - m.rz_exponent);
-    case Hindrance::di_felice: {
-      const double w = eps * slip_speed;    // superficial slip
-      const double re = std::max(m.density * w * diameter / m.viscosity, 1e-12);
-      const double chi = 3.7 - 0.65 * std::exp(-0.5 * std::pow(1.5 - std::log10(re), 2));
-      // F = beta_single(w) w eps^-chi, expressed per unit interstitial slip.
-      return single_sphere_beta(m, diameter, w) * eps * std::pow(eps, -chi);
-    }
+  case Hindrance::none:
+    return single_sphere_beta(m, diameter, slip_speed);
+  case Hindrance::richardson_zaki:
+    return single_sphere_beta(m, diameter, slip_speed) * std::pow(eps, 1.0 - m.rz_exponent);
+  case Hindrance::di_felice: {
+    const double w = eps * slip_speed;    // superficial slip
+    const double re = std::max(m.density * w * diameter / m.viscosity, 1e-12);
+    const double chi = 3.7 - 0.65 * std::exp(-0.5 * std::pow(1.5 - std::log10(re), 2));
+    // F = beta_single(w) w eps^-chi, expressed per unit interstitial slip.
+    return single_sphere_beta(m, diameter, w) * eps * std::pow(eps, -chi);
+  }
   }
   return 0.0;
 }

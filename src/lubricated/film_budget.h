@@ -115,8 +115,7 @@ inline double film_share_bound(const Lubrication &film, double film_radius, doub
 
 // The shear film's share a_t = |F| t_kick / (m_t |s|) from the squared lengths of its force and
 // the slip (F = -c_t s: parallel), m_t the tangential mass (tangential_mass_ratio m_e).
-inline double shear_film_share(double force_sq, double slip_sq, double tangential_mass,
-                               double kick_time)
+inline double shear_film_share(double force_sq, double slip_sq, double tangential_mass, double kick_time)
 {
   return std::sqrt(force_sq / std::max(slip_sq, DBL_MIN)) * kick_time / tangential_mass;
 }

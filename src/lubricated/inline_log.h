@@ -31,8 +31,14 @@ __attribute__((always_inline)) inline double log_inline(double x)
   double m;
   std::memcpy(&m, &m_bits, sizeof m);
   const double s = (m - 1.0) / (m + 1.0), z = s * s;
-  const double series = 1.0 + z * (1.0 / 3 + z * (1.0 / 5 + z * (1.0 / 7 + z * (1.0 / 9 + z * (1.0 / 11 +
-      z * (1.0 / 13 + z * (1.0 / 15 + z * (1.0 / 17 + z * (1.0 / 19 + z * (1.0 / 21))))))))));
+  const double series =
+      1.0 +
+      z * (1.0 / 3 +
+           z * (1.0 / 5 +
+                z * (1.0 / 7 +
+                     z * (1.0 / 9 +
+                          z * (1.0 / 11 +
+                               z * (1.0 / 13 + z * (1.0 / 15 + z * (1.0 / 17 + z * (1.0 / 19 + z * (1.0 / 21))))))))));
   constexpr double ln2_hi = 6.93147180369123816490e-01, ln2_lo = 1.90821492927058770002e-10;
   return k * ln2_hi + (k * ln2_lo + 2.0 * s * series);
 }

@@ -73,12 +73,12 @@ struct FilmRadius {
 struct Lubrication {
   Partner partner = Partner::particle;
   Expansion expansion = particle_particle_expansion;
-  double six_pi_mu = 0.0;          // 6 pi mu_f            [mass/(length time)]
-  double eps_activation = 0.0;     // eps_al (used when grid_spacing == 0)
-  double grid_spacing = 0.0;       // dx > 0: eps_al = 0.75 dx / R per contact (Breugem)
-  double eps_saturation = 1e-3;    // eps_1
-  double eps_release = -1e-2;      // eps_2
-  double lambda_activation = 0.0;  // lambda(eps_al) when eps_al is fixed
+  double six_pi_mu = 0.0;              // 6 pi mu_f            [mass/(length time)]
+  double eps_activation = 0.0;         // eps_al (used when grid_spacing == 0)
+  double grid_spacing = 0.0;           // dx > 0: eps_al = 0.75 dx / R per contact (Breugem)
+  double eps_saturation = 1e-3;        // eps_1
+  double eps_release = -1e-2;          // eps_2
+  double lambda_activation = 0.0;      // lambda(eps_al) when eps_al is fixed
   double integral_activation = 0.0;    // antiderivative of lambda at eps_al (fixed eps_al)
   double lambda_saturated = 0.0;       // lambda(eps_1)
   double integral_saturated = 0.0;     // antiderivative of lambda at eps_1
@@ -111,7 +111,7 @@ struct Lubrication {
     if (eps >= eps_saturation) return integral_al - expansion.integral(eps) - lambda_al * (eps_al - eps);
     // Saturated (no logarithm: L(eps_1) is kept per type pair).
     return integral_al - integral_saturated - lambda_al * (eps_al - eps_saturation) +
-        (lambda_saturated - lambda_al) * (eps_saturation - std::max(eps, eps_release));
+           (lambda_saturated - lambda_al) * (eps_saturation - std::max(eps, eps_release));
   }
 
   // eps_al with lambda and L there, for a contact of film radius R: kept per type pair for a
@@ -135,8 +135,7 @@ struct Lubrication {
   // The same two without branches or calls (log_inline), for loops the compiler vectorises;
   // equal to activation() and film_integral() within rounding. Only for an active film;
   // GRID: whether it has a grid spacing.
-  template <bool GRID>
-  __attribute__((always_inline)) Activation activation_inline(const FilmRadius &radius) const
+  template <bool GRID> __attribute__((always_inline)) Activation activation_inline(const FilmRadius &radius) const
   {
     if (!GRID) return {eps_activation, lambda_activation, integral_activation};
     const double eps_al = std::max(grid_activation * grid_spacing * radius.inverse, eps_saturation);
@@ -148,12 +147,9 @@ struct Lubrication {
     const double film = std::min(std::max(eps, eps_saturation), al.eps);    // eps_1 <= . <= eps_al
     const double saturated = std::min(std::max(eps, eps_release), eps_saturation);
     return al.integral - expansion.integral(film, log_inline(film)) - al.lambda * (al.eps - film) +
-        (lambda_saturated - al.lambda) * (eps_saturation - saturated);
+           (lambda_saturated - al.lambda) * (eps_saturation - saturated);
   }
-  double film_integral(double eps, double radius) const
-  {
-    return film_integral(eps, activation(FilmRadius(radius)));
-  }
+  double film_integral(double eps, double radius) const { return film_integral(eps, activation(FilmRadius(radius))); }
 
   // Momentum the film transfers to the pair (along n) while the gap goes from gap_before to
   // gap_after: the path integral of c_l, independent of how the path is split into steps.
@@ -190,9 +186,8 @@ struct Lubrication {
   }
 };
 
-inline Lubrication make_lubrication(Partner partner, double mu_f, double eps_activation,
-                                    double grid_spacing, double eps_saturation,
-                                    double eps_release)
+inline Lubrication make_lubrication(Partner partner, double mu_f, double eps_activation, double grid_spacing,
+                                    double eps_saturation, double eps_release)
 {
   Lubrication lub;
   lub.partner = partner;

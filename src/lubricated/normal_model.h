@@ -26,11 +26,11 @@ namespace lubricated {
 
 struct NormalModel {
   SpringDashpot contact;
-  ContactStep step;           // exact integration over one step (contact_step.h)
-  bool exact = true;          // false: sample F_s once per step (for comparison only)
+  ContactStep step;     // exact integration over one step (contact_step.h)
+  bool exact = true;    // false: sample F_s once per step (for comparison only)
   Lubrication lubrication;
-  double legendre = 0.0;      // A > 0: calibrate the contact to e / e_d = exp(-A / St)
-  double restitution = 1.0;   // e_d of the contact
+  double legendre = 0.0;       // A > 0: calibrate the contact to e / e_d = exp(-A / St)
+  double restitution = 1.0;    // e_d of the contact
 
   bool calibrated() const { return legendre > 0.0 && lubrication.active(); }
 
@@ -51,8 +51,8 @@ inline NormalModel make_normal_model(const Coefficients &c, Partner partner, dou
   m.contact = spring_dashpot_from_restitution(c.e_dry, c.contact_time(dt));
   m.step = make_contact_step(m.contact, dt);
   m.exact = c.exact_contact;
-  m.lubrication = make_lubrication(partner, c.viscosity, c.eps_activation, c.grid_spacing,
-                                   c.eps_saturation, c.eps_release);
+  m.lubrication =
+      make_lubrication(partner, c.viscosity, c.eps_activation, c.grid_spacing, c.eps_saturation, c.eps_release);
   m.legendre = c.legendre;
   m.restitution = c.e_dry;
   return m;
@@ -67,8 +67,7 @@ inline NormalModel make_normal_model(const Coefficients &c, Partner partner, dou
 // lambda, 1 wall, 1/2 pair; for a sphere on a wall and for two equal spheres
 // St = (2/9) rho_p R u0 / mu_f). gap_before: the gap from which on the film has not yet
 // acted on the velocity the contact sees (a step ago; now at a run start).
-inline EntryLoss entry_loss(const NormalModel &m, const FilmRadius &radius, double reduced_mass,
-                            double gap_before)
+inline EntryLoss entry_loss(const NormalModel &m, const FilmRadius &radius, double reduced_mass, double gap_before)
 {
   const Lubrication &lub = m.lubrication;
   const double speed_per_integral = lub.six_pi_mu * radius.value * radius.value / reduced_mass;
@@ -76,8 +75,7 @@ inline EntryLoss entry_loss(const NormalModel &m, const FilmRadius &radius, doub
   const double at_contact = lub.film_integral(0.0, al);
   EntryLoss loss;
   loss.film_loss = speed_per_integral * at_contact;
-  loss.pending = speed_per_integral *
-      (at_contact - lub.film_integral(std::max(gap_before, 0.0) * radius.inverse, al));
+  loss.pending = speed_per_integral * (at_contact - lub.film_integral(std::max(gap_before, 0.0) * radius.inverse, al));
   loss.stokes_speed = speed_per_integral * lub.expansion.c_inv;
   loss.decay_constant = m.legendre;
   loss.restitution = m.restitution;
@@ -91,15 +89,14 @@ inline EntryLoss entry_loss(const NormalModel &m, const FilmRadius &radius, doub
 inline std::string calibration_warning(const Coefficients &c, Partner partner)
 {
   if (!(c.legendre > 0.0 && c.wet() && c.grid_spacing <= 0.0)) return "";
-  const Lubrication lub = make_lubrication(partner, c.viscosity, c.eps_activation, 0.0,
-                                           c.eps_saturation, c.eps_release);
+  const Lubrication lub =
+      make_lubrication(partner, c.viscosity, c.eps_activation, 0.0, c.eps_saturation, c.eps_release);
   const double loss = lub.film_integral(0.0, 1.0) / lub.expansion.c_inv;
   if (loss * (1.0 + 1.0 / c.e_dry) < c.legendre) return "";
   return "legendre " + detail::number(c.legendre) + " cannot act with e_d = " + detail::number(c.e_dry) +
-      " and activation " + detail::number(c.eps_activation) +
-      ": the film alone takes more than the law allows (e_d > " +
-      detail::number(std::ceil(100.0 * loss / (c.legendre - loss)) / 100.0) +
-      " needed, or a smaller activation)";
+         " and activation " + detail::number(c.eps_activation) +
+         ": the film alone takes more than the law allows (e_d > " +
+         detail::number(std::ceil(100.0 * loss / (c.legendre - loss)) / 100.0) + " needed, or a smaller activation)";
 }
 
 struct NormalForce {
@@ -129,9 +126,8 @@ inline Evaluation evaluation_of(bool setup, bool midpoint_integrator)
 
 // radius: the film's R (lubrication.h) with its inverse.
 __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel &m, double gap,
-                                                              const FilmRadius &radius,
-                                                              double reduced_mass, double u_n,
-                                                              Evaluation when = Evaluation::step)
+                                                               const FilmRadius &radius, double reduced_mass,
+                                                               double u_n, Evaluation when = Evaluation::step)
 {
   const bool at_start = when != Evaluation::step;
   NormalForce f;
@@ -155,8 +151,7 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
       // At a run start it may stop the motion over the half kick (dt/2 F/m) or the half drift
       // (dt^2/8 F/m against dt/2 u_n), not reverse it.
       const double cap = when == Evaluation::midpoint_start ? 4.0 * limit / dt : 2.0 * limit / dt;
-      if (m.exact || when == Evaluation::midpoint_start)
-        f.lubrication = std::max(-cap, std::min(cap, f.lubrication));
+      if (m.exact || when == Evaluation::midpoint_start) f.lubrication = std::max(-cap, std::min(cap, f.lubrication));
     }
   }
   if (m.exact && contact_possible(gap, u_n, m.step.dt)) {
@@ -192,15 +187,15 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
 // over the step (doc/model.rst, "Lubrication film", lubrication.h) as a force [force], without
 // branches or calls, for loops over such pairs that the compiler vectorises. Requires an
 // active film; GRID: whether it has a grid spacing (Lubrication::activation_inline).
-template <bool GRID>
-__attribute__((always_inline)) inline double
-film_force_apart(const Lubrication &lub, double gap, const FilmRadius &radius, double reduced_mass,
-                 double u_n, double dt, double inv_dt)
+template <bool GRID> __attribute__((always_inline)) inline double film_force_apart(const Lubrication &lub, double gap,
+                                                                                   const FilmRadius &radius,
+                                                                                   double reduced_mass, double u_n,
+                                                                                   double dt, double inv_dt)
 {
   const Lubrication::Activation al = lub.activation_inline<GRID>(radius);
   const double after = gap * radius.inverse, before = (gap - u_n * dt) * radius.inverse;
   const double impulse = lub.six_pi_mu * radius.value * radius.value *
-      (lub.film_integral_inline(after, al) - lub.film_integral_inline(before, al));
+                         (lub.film_integral_inline(after, al) - lub.film_integral_inline(before, al));
   return film_force_of_impulse(impulse, reduced_mass * std::fabs(u_n), inv_dt);
 }
 
@@ -212,9 +207,9 @@ film_force_apart(const Lubrication &lub, double gap, const FilmRadius &radius, d
 // vectorises; `sustained` says whether the pair is in that state (if not, the result means
 // nothing: take normal_force()). GRID: whether the film has a grid spacing.
 template <bool GRID>
-__attribute__((always_inline)) inline NormalForce
-sustained_contact_force(const NormalModel &m, double gap, const FilmRadius &radius,
-                        double reduced_mass, double u_n, bool &sustained)
+__attribute__((always_inline)) inline NormalForce sustained_contact_force(const NormalModel &m, double gap,
+                                                                          const FilmRadius &radius, double reduced_mass,
+                                                                          double u_n, bool &sustained)
 {
   const ContactStep &cs = m.step;
   const double g0 = gap - u_n * cs.dt;
@@ -226,13 +221,13 @@ sustained_contact_force(const NormalModel &m, double gap, const FilmRadius &radi
   const double lambda_al = lub.activation_inline<GRID>(radius).lambda;
   const double release = lub.eps_release * radius.value;
   const double impulse = lub.six_pi_mu * radius.value * (lub.lambda_saturated - lambda_al) *
-      (std::max(g0, release) - std::max(gap, release));
+                         (std::max(g0, release) - std::max(gap, release));
   f.lubrication = film_force_of_impulse(impulse, reduced_mass * std::fabs(u_n), cs.inv_dt);
   return f;
 }
 
-inline NormalForce normal_force(const NormalModel &m, double gap, double radius,
-                                double reduced_mass, double u_n, Evaluation when = Evaluation::step)
+inline NormalForce normal_force(const NormalModel &m, double gap, double radius, double reduced_mass, double u_n,
+                                Evaluation when = Evaluation::step)
 {
   return normal_force(m, gap, FilmRadius(radius), reduced_mass, u_n, when);
 }

@@ -39,15 +39,30 @@ constexpr double tangential_mass_ratio = 2.0 / 7.0;    // m_t / m_e for solid sp
 struct Vec3 {
   double x = 0.0, y = 0.0, z = 0.0;
 };
-inline double dot(const Vec3 &a, const Vec3 &b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline double dot(const Vec3 &a, const Vec3 &b)
+{
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 inline Vec3 cross(const Vec3 &a, const Vec3 &b)
 {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline Vec3 scaled(const Vec3 &a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-inline Vec3 minus(const Vec3 &a, const Vec3 &b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline Vec3 plus(const Vec3 &a, const Vec3 &b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline Vec3 tangential_part(const Vec3 &a, const Vec3 &n) { return minus(a, scaled(n, dot(a, n))); }
+inline Vec3 scaled(const Vec3 &a, double s)
+{
+  return {a.x * s, a.y * s, a.z * s};
+}
+inline Vec3 minus(const Vec3 &a, const Vec3 &b)
+{
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+inline Vec3 plus(const Vec3 &a, const Vec3 &b)
+{
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+inline Vec3 tangential_part(const Vec3 &a, const Vec3 &n)
+{
+  return minus(a, scaled(n, dot(a, n)));
+}
 
 struct TangentialModel {
   double friction = 0.0;          // mu_c; 0: no tangential contact force, no history
@@ -56,7 +71,7 @@ struct TangentialModel {
   double damping_step = 0.0;      // c' / m_t  [1/time]
   double dt = 0.0;
   // Shear film: F = -2 pi mu_f R_e ln(eps_al / max(eps, eps_1)) s for eps_2 < eps < eps_al.
-  double two_pi_mu = 0.0;         // 2 pi mu_f = 6 pi mu_f / 3; 0: no shear film
+  double two_pi_mu = 0.0;    // 2 pi mu_f = 6 pi mu_f / 3; 0: no shear film
   bool contact_active() const { return friction > 0.0; }
   bool rolling_active() const { return rolling > 0.0; }
   bool film_active() const { return two_pi_mu > 0.0; }
@@ -83,7 +98,10 @@ inline TangentialModel make_tangential_model(const Coefficients &c, double dt)
 // Whether the tangential contact acts: in overlap. Known limitation: an impact whose entry
 // falls on a step boundary to round-off can gain or lose one step of tangential damping
 // (up to 2 ln(1/e_t) / N_c of the slip) depending on the sign of the round-off.
-inline bool tangential_in_contact(double gap) { return gap < 0.0; }
+inline bool tangential_in_contact(double gap)
+{
+  return gap < 0.0;
+}
 
 // Part of the last step spent in overlap by a contact that is new now (free flight before).
 inline double first_contact_fraction(double gap, double u_n, double dt)
@@ -96,9 +114,8 @@ inline double first_contact_fraction(double gap, double u_n, double dt)
 // the end of the last step; out: now) is rotated into the current tangent plane before use.
 // first_fraction: for a contact that opened during the last step, the part of that step spent
 // in overlap (the elongation starts from zero there); 1 for a sustained contact.
-inline Vec3 tangential_contact_force(const TangentialModel &m, Vec3 &delta, const Vec3 &n,
-                                     const Vec3 &s, double tangential_mass, double normal_force,
-                                     double first_fraction = 1.0)
+inline Vec3 tangential_contact_force(const TangentialModel &m, Vec3 &delta, const Vec3 &n, const Vec3 &s,
+                                     double tangential_mass, double normal_force, double first_fraction = 1.0)
 {
   // Keep the elongation in the tangent plane, with its length (the pair may have rotated):
   // remove the normal part r and rescale by sqrt(1 / (1 - x)), x = r^2 / |delta|^2; for the
@@ -109,8 +126,10 @@ inline Vec3 tangential_contact_force(const TangentialModel &m, Vec3 &delta, cons
     const double length_sq = dot(delta, delta);
     delta = minus(delta, scaled(n, normal_part));
     const double x = normal_part * normal_part / length_sq;
-    if (x < 1e-4) delta = scaled(delta, 1.0 + x * (0.5 + 0.375 * x));
-    else if (x < 1.0) delta = scaled(delta, std::sqrt(1.0 / (1.0 - x)));
+    if (x < 1e-4)
+      delta = scaled(delta, 1.0 + x * (0.5 + 0.375 * x));
+    else if (x < 1.0)
+      delta = scaled(delta, std::sqrt(1.0 / (1.0 - x)));
   }
   delta = plus(delta, scaled(s, first_fraction * m.dt));
 
@@ -120,8 +139,7 @@ inline Vec3 tangential_contact_force(const TangentialModel &m, Vec3 &delta, cons
   if (f2 > limit * limit) {
     f = scaled(f, limit / std::sqrt(f2));
     // Sliding: the spring holds what the capped force implies.
-    delta = scaled(plus(scaled(f, 1.0 / tangential_mass), scaled(s, m.damping_step)),
-                   -1.0 / m.stiffness_step);
+    delta = scaled(plus(scaled(f, 1.0 / tangential_mass), scaled(s, m.damping_step)), -1.0 / m.stiffness_step);
   }
   return f;
 }
@@ -130,14 +148,13 @@ inline Vec3 tangential_contact_force(const TangentialModel &m, Vec3 &delta, cons
 // model A): torque on i of size mu_r R_e |F_n| against the relative rolling rate
 // w = tangential part of omega_i - omega_j, capped so that one step cannot reverse w
 // (moment of inertia of the relative rolling: 1/I_e = 1/I_i + 1/I_j). On j: the opposite.
-inline Vec3 rolling_torque(const TangentialModel &m, const Vec3 &n, const Vec3 &omega_rel,
-                           double reduced_radius, double reduced_inertia, double normal_force)
+inline Vec3 rolling_torque(const TangentialModel &m, const Vec3 &n, const Vec3 &omega_rel, double reduced_radius,
+                           double reduced_inertia, double normal_force)
 {
   const Vec3 w = tangential_part(omega_rel, n);
   const double speed = std::sqrt(dot(w, w));
   if (speed == 0.0) return {};
-  const double torque = std::min(m.rolling * reduced_radius * std::fabs(normal_force),
-                                 reduced_inertia * speed / m.dt);
+  const double torque = std::min(m.rolling * reduced_radius * std::fabs(normal_force), reduced_inertia * speed / m.dt);
   return scaled(w, -torque / speed);
 }
 
@@ -150,13 +167,11 @@ inline Vec3 rolling_torque(const TangentialModel &m, const Vec3 &n, const Vec3 &
 // equal spheres. Activated at eps_al (continuous there), saturated below eps_1, cut below eps_2,
 // like the normal film. The damper is integrated exactly over the step (factor 1 - exp(-x)),
 // so it never reverses s, however viscous the fluid or long the step.
-inline Vec3 shear_film_force(const TangentialModel &m, const Vec3 &s, double eps, double eps_al,
-                             double eps_saturation, double eps_release, double reduced_radius,
-                             double tangential_mass)
+inline Vec3 shear_film_force(const TangentialModel &m, const Vec3 &s, double eps, double eps_al, double eps_saturation,
+                             double eps_release, double reduced_radius, double tangential_mass)
 {
   if (!(eps < eps_al && eps > eps_release)) return {};
-  const double coefficient =
-      m.two_pi_mu * reduced_radius * std::log(eps_al / std::max(eps, eps_saturation));
+  const double coefficient = m.two_pi_mu * reduced_radius * std::log(eps_al / std::max(eps, eps_saturation));
   const double rate = coefficient * m.dt / tangential_mass;
   const double factor = rate < 1e-6 ? rate * (1.0 - 0.5 * rate) : -std::expm1(-rate);
   return scaled(s, -factor * tangential_mass / m.dt);

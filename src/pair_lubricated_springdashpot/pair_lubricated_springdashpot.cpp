@@ -66,7 +66,8 @@ void PairLubricatedSpringDashpot::allocate()
   const int n = ntypes_alloc = atom->ntypes;
   memory->create(setflag, n + 1, n + 1, "pair:setflag");
   for (int i = 1; i <= n; i++)
-    for (int j = i; j <= n; j++) setflag[i][j] = 0;
+    for (int j = i; j <= n; j++)
+      setflag[i][j] = 0;
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
   coeffs.assign((n + 1) * (n + 1), lub::Coefficients());
   normal_models.assign((n + 1) * (n + 1), lub::NormalModel());
@@ -85,8 +86,10 @@ void PairLubricatedSpringDashpot::settings(int narg, char **arg)
   for (int iarg = 0; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     if (key != "vector" && key != "limit")
-      error->all(FLERR, "{}: unknown keyword '{}' (allowed: vector yes|no, limit atom|pair; "
-                 "coefficients go in pair_coeff)", STYLE, key);
+      error->all(FLERR,
+                 "{}: unknown keyword '{}' (allowed: vector yes|no, limit atom|pair; "
+                 "coefficients go in pair_coeff)",
+                 STYLE, key);
     const char *allowed = key == "vector" ? "yes or no" : "atom or pair";
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value ({})", STYLE, key, allowed);
     const std::string value = arg[iarg + 1];
@@ -172,14 +175,15 @@ void PairLubricatedSpringDashpot::init_style()
       any_shear_film = any_shear_film || (c.wet() && c.shear_film());
     }
   if (any_tangential && !(atom->omega_flag && atom->torque_flag))
-    error->all(FLERR, "{} with friction, rolling or shearfilm requires per-atom omega and torque "
-               "(atom_style sphere)", STYLE);
+    error->all(FLERR,
+               "{} with friction, rolling or shearfilm requires per-atom omega and torque "
+               "(atom_style sphere)",
+               STYLE);
   // Friction needs the tangential elongation of every contact, kept by a fix of our own
   // that follows atoms across neighbor-list rebuilds, ranks and restart files.
   if (any_friction && !history) {
     history_id = "LUBRICATED_HISTORY_" + std::to_string(instance_me);
-    history = dynamic_cast<FixContactHistory *>(
-        modify->add_fix(history_id + " all LUBRICATED_HISTORY 3"));
+    history = dynamic_cast<FixContactHistory *>(modify->add_fix(history_id + " all LUBRICATED_HISTORY 3"));
     if (!history) error->all(FLERR, "{}: could not create its contact-history fix", STYLE);
   }
   if (!any_friction && history) {
@@ -226,8 +230,9 @@ void PairLubricatedSpringDashpot::init_style()
   shear_records = film_budget && any_shear_film;    // the shear films share the budget
   if (!film_budget) scale_of_atom.clear();
   if ((any_wet || wet_walls) && comm->me == 0)
-    utils::logmesg(lmp, "{}: {}\n", STYLE, film_budget ? "films within each sphere's many-body budget (limit atom)"
-                                                       : "each film within its own cap only (limit pair)");
+    utils::logmesg(lmp, "{}: {}\n", STYLE,
+                   film_budget ? "films within each sphere's many-body budget (limit atom)"
+                               : "each film within its own cap only (limit pair)");
 
   // Immovable atoms and rigid bodies, found anew at every run (fixes and groups may change).
   contact_mass.init(STYLE, true);
@@ -242,8 +247,10 @@ void PairLubricatedSpringDashpot::init_style()
   // refused at each run setup rather than evaluated as NaN.
   for (int i = 0; i < atom->nlocal; i++)
     if (!(atom->radius[i] > 0.0))
-      error->one(FLERR, "{}: atom {} has diameter {} (allowed: > 0; a point particle has no contact "
-                 "or film)", STYLE, atom->tag[i], 2.0 * atom->radius[i]);
+      error->one(FLERR,
+                 "{}: atom {} has diameter {} (allowed: > 0; a point particle has no contact "
+                 "or film)",
+                 STYLE, atom->tag[i], 2.0 * atom->radius[i]);
 
   // Largest radius per type: atoms present now, and those fix pour/deposit may insert.
   std::vector<double> local(n + 1, 0.0);
@@ -266,8 +273,7 @@ void PairLubricatedSpringDashpot::init_list(int id, NeighList *ptr)
 
 double PairLubricatedSpringDashpot::init_one(int i, int j)
 {
-  if (!setflag[i][j])
-    error->all(FLERR, "{}: coefficients for atom types {} {} are not set (no mixing)", STYLE, i, j);
+  if (!setflag[i][j]) error->all(FLERR, "{}: coefficients for atom types {} {} are not set (no mixing)", STYLE, i, j);
   const lub::Coefficients &c = coeffs[index(i, j)];
   normal_models[index(i, j)] = normal_models[index(j, i)] =
       lub::make_normal_model(c, lub::Partner::particle, update->dt);
@@ -308,9 +314,8 @@ void PairLubricatedSpringDashpot::set_network_loads(int i, int j)
 {
   const lub::NormalModel &m = normal_models[index(i, j)];
   const double dt = update->dt;
-  const double load = m.exact
-      ? lub::contact_load(m.step.stiffness_step, m.step.damping_step, dt)
-      : lub::contact_load(m.contact.stiffness_per_mass, m.contact.damping_per_mass, dt);
+  const double load = m.exact ? lub::contact_load(m.step.stiffness_step, m.step.damping_step, dt)
+                              : lub::contact_load(m.contact.stiffness_per_mass, m.contact.damping_per_mass, dt);
   const lub::TangentialModel &tm = tangential_models[index(i, j)];
   const double bound =
       tm.contact_active() ? std::max(load, lub::contact_load(tm.stiffness_step, tm.damping_step, dt)) : load;
@@ -329,34 +334,40 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (inverse_mass_on && (neighbor->ago == 0 || update->setupflag)) update_inverse_mass();
-  if (!film_budget) film_budget_now = false;
+  if (!film_budget)
+    film_budget_now = false;
   else if (neighbor->ago == 0 || update->setupflag || update->dt != film_bound_dt)
     film_budget_now = films_can_exceed_budget();
   if (film_budget_now) begin_film_budget();
   // A scene pays only for what it uses: one loop per combination.
   if (any_tangential) {
-    if (any_wet) eval<true, true>();
-    else eval<false, true>();
+    if (any_wet)
+      eval<true, true>();
+    else
+      eval<false, true>();
   } else {
     // The vectorised loops for steps (a run's set-up evaluates with full-step velocities).
     const bool vectorised = vector_loops && !update->setupflag;
-    if (any_wet) vectorised ? eval<true, false, true>() : eval<true, false>();
-    else vectorised ? eval<false, false, true>() : eval<false, false>();
+    if (any_wet)
+      vectorised ? eval<true, false, true>() : eval<true, false>();
+    else
+      vectorised ? eval<false, false, true>() : eval<false, false>();
   }
   if (film_budget_now) finish_film_budget();
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
-int PairLubricatedSpringDashpot::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
-                                                   int * /*pbc*/)
+int PairLubricatedSpringDashpot::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   if (comm_what == COMM_NETWORK) {
     constexpr int nv = lub::network_values;
-    for (int k = 0; k < n; k++) std::copy_n(&network_sums[nv * list[k]], nv, buf + nv * k);
+    for (int k = 0; k < n; k++)
+      std::copy_n(&network_sums[nv * list[k]], nv, buf + nv * k);
     return nv * n;
   }
   const double *values = comm_what == COMM_MASS ? inverse_mass.data() : scale_of_atom.data();
-  for (int k = 0; k < n; k++) buf[k] = values[list[k]];
+  for (int k = 0; k < n; k++)
+    buf[k] = values[list[k]];
   return n;
 }
 
@@ -367,7 +378,8 @@ void PairLubricatedSpringDashpot::unpack_forward_comm(int n, int first, double *
     return;
   }
   double *values = comm_what == COMM_MASS ? inverse_mass.data() : scale_of_atom.data();
-  for (int k = 0; k < n; k++) values[first + k] = buf[k];
+  for (int k = 0; k < n; k++)
+    values[first + k] = buf[k];
 }
 
 int PairLubricatedSpringDashpot::pack_reverse_comm(int n, int first, double *buf)
@@ -376,7 +388,8 @@ int PairLubricatedSpringDashpot::pack_reverse_comm(int n, int first, double *buf
     std::copy_n(&network_sums[lub::network_values * first], lub::network_values * n, buf);
     return lub::network_values * n;
   }
-  for (int k = 0; k < n; k++) buf[k] = load_of_atom[first + k];
+  for (int k = 0; k < n; k++)
+    buf[k] = load_of_atom[first + k];
   return n;
 }
 
@@ -385,17 +398,16 @@ void PairLubricatedSpringDashpot::unpack_reverse_comm(int n, int *list, double *
   if (comm_what == COMM_NETWORK) {
     constexpr int nv = lub::network_values;
     for (int k = 0; k < n; k++)
-      for (int q = 0; q < nv; q++) network_sums[nv * list[k] + q] += buf[nv * k + q];
+      for (int q = 0; q < nv; q++)
+        network_sums[nv * list[k] + q] += buf[nv * k + q];
     return;
   }
-  for (int k = 0; k < n; k++) load_of_atom[list[k]] += buf[k];
+  for (int k = 0; k < n; k++)
+    load_of_atom[list[k]] += buf[k];
 }
 
-
-
-double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, double rsq,
-                                           double /*factor_coul*/, double /*factor_lj*/,
-                                           double &fforce)
+double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, double rsq, double /*factor_coul*/,
+                                           double /*factor_lj*/, double &fforce)
 {
   fforce = 0.0;
   svector[0] = svector[1] = 0.0;
@@ -409,7 +421,8 @@ double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, d
 
   double **x = atom->x, **v = atom->v;
   double u_n = 0.0;
-  for (int d = 0; d < 3; d++) u_n += (v[i][d] - v[j][d]) * (x[i][d] - x[j][d]);
+  for (int d = 0; d < 3; d++)
+    u_n += (v[i][d] - v[j][d]) * (x[i][d] - x[j][d]);
   u_n /= r;
   if (!model.acts(r - radsum, lub_radius, u_n)) return 0.0;
   const double m_e = inverse_mass_on ? lub::reduced_mass_of_inverses(inverse_mass[i], inverse_mass[j])
@@ -446,9 +459,7 @@ void PairLubricatedSpringDashpot::read_restart(FILE *fp)
       if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (!setflag[i][j]) continue;
-      if (me == 0)
-        utils::sfread(FLERR, buf, sizeof(double), lub::Coefficients::packed_size, fp, nullptr,
-                      error);
+      if (me == 0) utils::sfread(FLERR, buf, sizeof(double), lub::Coefficients::packed_size, fp, nullptr, error);
       MPI_Bcast(buf, lub::Coefficients::packed_size, MPI_DOUBLE, 0, world);
       coeffs[index(i, j)].unpack(buf);
       coeffs[index(j, i)].unpack(buf);
@@ -458,12 +469,12 @@ void PairLubricatedSpringDashpot::read_restart(FILE *fp)
 double PairLubricatedSpringDashpot::memory_usage()
 {
   return Pair::memory_usage() + coeffs.size() * sizeof(lub::Coefficients) +
-      normal_models.size() * sizeof(lub::NormalModel) +
-      (candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity() +
-       film_i.capacity() + film_j.capacity() + group_count.capacity() + group_keys.capacity() +
-       record_i.capacity() + record_j.capacity()) *
-          sizeof(int) +
-      (step_reach.capacity() + inverse_mass.capacity() + load_of_atom.capacity() + scale_of_atom.capacity() +
-       record_force.capacity() + record_shear.capacity()) *
-          sizeof(double);
+         normal_models.size() * sizeof(lub::NormalModel) +
+         (candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity() + film_i.capacity() +
+          film_j.capacity() + group_count.capacity() + group_keys.capacity() + record_i.capacity() +
+          record_j.capacity()) *
+             sizeof(int) +
+         (step_reach.capacity() + inverse_mass.capacity() + load_of_atom.capacity() + scale_of_atom.capacity() +
+          record_force.capacity() + record_shear.capacity()) *
+             sizeof(double);
 }

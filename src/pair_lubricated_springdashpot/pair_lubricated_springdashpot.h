@@ -48,19 +48,19 @@ class PairLubricatedSpringDashpot : public Pair {
   double film_scale(int i) const { return film_budget_now ? scale_of_atom[i] : 1.0; }
 
  protected:
-  std::vector<lubricated::Coefficients> coeffs;    // per type pair, (ntypes+1)^2
-  std::vector<lubricated::NormalModel> normal_models;     // derived from coeffs and dt
+  std::vector<lubricated::Coefficients> coeffs;                  // per type pair, (ntypes+1)^2
+  std::vector<lubricated::NormalModel> normal_models;            // derived from coeffs and dt
   std::vector<lubricated::TangentialModel> tangential_models;    // tangential part, derived likewise
-  std::vector<double> maxrad;                      // largest radius per type
-  std::vector<double> max_reach;                   // farthest film gap per type pair
+  std::vector<double> maxrad;                                    // largest radius per type
+  std::vector<double> max_reach;                                 // farthest film gap per type pair
   bool any_wet = false;
-  bool any_tangential = false;    // friction, rolling or shear film on some type pair
+  bool any_tangential = false;                   // friction, rolling or shear film on some type pair
   class FixContactHistory *history = nullptr;    // tangential elongation per contact
   std::string history_id;
   class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
   // List entries kept by eval's first pass: i, j and (with friction, for the history) jj.
   std::vector<int> candidate_i, candidate_j, candidate_jj;
-  std::vector<double> step_reach;                // per atom: bound on its move in one step
+  std::vector<double> step_reach;    // per atom: bound on its move in one step
   // No tangential parts, exact integration, velocity Verlet (and `vector yes`): pass 1 puts the
   // pairs that cannot touch within the step but are in the film in a list of their own, and
   // vector_pairs.h computes them, the pairs in sustained contact and the other pairs that stay
@@ -89,8 +89,8 @@ class PairLubricatedSpringDashpot : public Pair {
   bool films_can_exceed_budget();
   void begin_film_budget();
   void reserve_records(int more);
-  __attribute__((always_inline)) inline void record_film(int i, int j, double film, double share,
-                                                         int nlocal, int newton_pair)
+  __attribute__((always_inline)) inline void record_film(int i, int j, double film, double share, int nlocal,
+                                                         int newton_pair)
   {
     load_of_atom[i] += share;
     if (newton_pair || j < nlocal) load_of_atom[j] += share;
@@ -104,8 +104,8 @@ class PairLubricatedSpringDashpot : public Pair {
   // normal and shear films' (film_budget.h); both films are scaled by the same s.
   bool shear_records = false;
   std::vector<double> record_shear;
-  __attribute__((always_inline)) inline void record_films(int i, int j, double film, const double *shear,
-                                                          double share, int nlocal, int newton_pair)
+  __attribute__((always_inline)) inline void record_films(int i, int j, double film, const double *shear, double share,
+                                                          int nlocal, int newton_pair)
   {
     load_of_atom[i] += share;
     if (newton_pair || j < nlocal) load_of_atom[j] += share;
@@ -147,12 +147,10 @@ class PairLubricatedSpringDashpot : public Pair {
   // One contact's tangential force and torques (inlined into eval's loop). shear (4 doubles, or
   // nullptr): the shear film's force on i, included in ft and the torques, and its share of the
   // film budget for this kick time (film_budget.h); left alone where no shear film acts.
-  __attribute__((always_inline)) inline void tangential(int i, int j, int jj, const double *del,
-                                                        const double *dv, double rinv, double gap,
-                                                        double u_n, double lub_radius, double m_e,
-                                                        double normal_force, double *ft,
-                                                        double *ti, double *tj, double kick_time,
-                                                        double *shear);
+  __attribute__((always_inline)) inline void tangential(int i, int j, int jj, const double *del, const double *dv,
+                                                        double rinv, double gap, double u_n, double lub_radius,
+                                                        double m_e, double normal_force, double *ft, double *ti,
+                                                        double *tj, double kick_time, double *shear);
 };
 
 }    // namespace LAMMPS_NS

@@ -69,13 +69,13 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
       const lub::FilmRadius radius_ij = lub::film_radius_pair(radius[i], radius[j]);
       const double reach = radius[i] + radius[j] + film.reach(radius_ij.value) + skin;
       if (delx * delx + dely * dely + delz * delz >= reach * reach) continue;
-      const double b =
-          lub::film_share_bound(film, radius_ij.value, lub::reduced_mass(rmass[i], rmass[j]), dt);
+      const double b = lub::film_share_bound(film, radius_ij.value, lub::reduced_mass(rmass[i], rmass[j]), dt);
       bound[i] += b;
       if (newton_pair || j < nlocal) bound[j] += b;
     }
   }
-  for (auto wall : walls) wall->add_film_share_bounds(bound, nlocal);
+  for (auto wall : walls)
+    wall->add_film_share_bounds(bound, nlocal);
   if (newton_pair) {
     comm_what = COMM_LOAD;
     comm->reverse_comm(this);
@@ -83,7 +83,8 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
   // A margin for the rounding of the film's integral (film_budget.h, ~1e-12 relative).
   constexpr double below_one = 1.0 - 1e-6;
   int over = 0;
-  for (int i = 0; i < nlocal; i++) over |= bound[i] > below_one;
+  for (int i = 0; i < nlocal; i++)
+    over |= bound[i] > below_one;
   int any_over = 0;
   MPI_Allreduce(&over, &any_over, 1, MPI_INT, MPI_MAX, world);
   return any_over != 0;
@@ -108,7 +109,8 @@ void PairLubricatedSpringDashpot::begin_film_budget()
     scale_of_atom.resize(atom->nmax);
   }
   std::fill(load_of_atom.begin(), load_of_atom.begin() + nall, 0.0);
-  for (auto wall : walls) wall->add_film_loads(load_of_atom.data(), nlocal);
+  for (auto wall : walls)
+    wall->add_film_loads(load_of_atom.data(), nlocal);
   nrecord = 0;
 }
 
@@ -228,7 +230,8 @@ void PairLubricatedSpringDashpot::check_contact_network(int ncandidate)
   network_i.clear();
   network_j.clear();
   auto normal = [&](int i, int j, double *n) {
-    for (int d = 0; d < 3; d++) n[d] = x[i][d] - x[j][d];
+    for (int d = 0; d < 3; d++)
+      n[d] = x[i][d] - x[j][d];
     return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   };
   // The masses the contacts move (contact_mass.h): an immovable atom is not part of the state,
@@ -245,7 +248,8 @@ void PairLubricatedSpringDashpot::check_contact_network(int ncandidate)
     if (!(gap < 0.0) || r == 0.0) continue;
     const double *vi = midpoint ? midpoint->step_velocity(i) : v[i];
     const double *vj = midpoint ? midpoint->step_velocity(j) : v[j];
-    for (int d = 0; d < 3; d++) n[d] /= r;
+    for (int d = 0; d < 3; d++)
+      n[d] /= r;
     const double u_n = (vi[0] - vj[0]) * n[0] + (vi[1] - vj[1]) * n[1] + (vi[2] - vj[2]) * n[2];
     if (!(gap - u_n * dt < 0.0)) continue;    // in overlap a step ago too
     const int t = index(type[i], type[j]);
@@ -267,7 +271,8 @@ void PairLubricatedSpringDashpot::check_contact_network(int ncandidate)
     const int i = network_i[k], j = network_j[k], t = index(type[i], type[j]);
     double n[3];
     const double r = normal(i, j, n);
-    for (int d = 0; d < 3; d++) n[d] /= r;
+    for (int d = 0; d < 3; d++)
+      n[d] /= r;
     const double m_e = pair_mass(i, j);
     const double *si = &network_sums[nv * i], *sj = &network_sums[nv * j];
     scores.add(static_cast<int>(k), lub::network_lower_quotient(network_load[t], m_e, n, si, mass(i), sj, mass(j)),
@@ -283,8 +288,7 @@ void PairLubricatedSpringDashpot::check_contact_network(int ncandidate)
     }
   };
   if (!scores.decide(world, network_warned, describe, found)) return;
-  const std::string message =
-      lub::network_message(STYLE, coeffs[index(found.type_i, found.type_j)], update->dt, found);
+  const std::string message = lub::network_message(STYLE, coeffs[index(found.type_i, found.type_j)], update->dt, found);
   if (found.unstable) error->all(FLERR, message);
   if (comm->me == 0) error->warning(FLERR, message);
 }

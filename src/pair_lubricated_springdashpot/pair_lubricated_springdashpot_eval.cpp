@@ -36,11 +36,10 @@ namespace lub = lubricated;
 
 // Tangential force ft on i (on j: -ft) and the torques ti, tj of one pair (tangential.h);
 // dv = v_i - v_j as used for u_n.
-inline void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const double *del,
-                                                    const double *dv_ij, double rinv, double gap,
-                                                    double u_n, double lub_radius, double m_e,
-                                                    double normal_force, double *ft, double *ti,
-                                                    double *tj, double kick_time, double *shear)
+inline void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const double *del, const double *dv_ij,
+                                                    double rinv, double gap, double u_n, double lub_radius, double m_e,
+                                                    double normal_force, double *ft, double *ti, double *tj,
+                                                    double kick_time, double *shear)
 {
   const lub::TangentialModel &tm = tangential_models[index(atom->type[i], atom->type[j])];
   const double radi = atom->radius[i], radj = atom->radius[j];
@@ -50,8 +49,7 @@ inline void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const 
   const lub::Vec3 wi{omega[i][0], omega[i][1], omega[i][2]};
   const lub::Vec3 wj{omega[j][0], omega[j][1], omega[j][2]};
   const lub::Vec3 s =
-      lub::tangential_part(lub::minus(dv, lub::cross(lub::plus(lub::scaled(wi, radi),
-                                                               lub::scaled(wj, radj)), n)), n);
+      lub::tangential_part(lub::minus(dv, lub::cross(lub::plus(lub::scaled(wi, radi), lub::scaled(wj, radj)), n)), n);
   const double m_t = lub::tangential_mass_ratio * m_e;
 
   lub::Vec3 f;
@@ -72,9 +70,8 @@ inline void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const 
   if (tm.film_active()) {
     const lub::Lubrication &film = normal_models[index(atom->type[i], atom->type[j])].lubrication;
     const double eps = gap / lub_radius;
-    const lub::Vec3 fs = lub::shear_film_force(tm, s, eps, film.activation_for(lub_radius),
-                                               film.eps_saturation, film.eps_release,
-                                               radi * radj / (radi + radj), m_t);
+    const lub::Vec3 fs = lub::shear_film_force(tm, s, eps, film.activation_for(lub_radius), film.eps_saturation,
+                                               film.eps_release, radi * radj / (radi + radj), m_t);
     f = lub::plus(f, fs);
     if (shear) {
       shear[0] = fs.x, shear[1] = fs.y, shear[2] = fs.z;
@@ -109,8 +106,7 @@ static inline bool within_a_step(double rsq, double dv_dot_del, double dt, doubl
 // chunks that stay in the cache between computing and applying the forces; kept entries
 // where a contact starts or ends go through the general loop, evaluate(i, j, jj). Unless one
 // model serves every pair, each chunk is first grouped by type pair (a counting sort).
-template <class Evaluate>
-void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evaluate &evaluate)
+template <class Evaluate> void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evaluate &evaluate)
 {
   if (ncandidate + nfilm == 0) return;
   double **x = atom->x, **f = atom->f;
@@ -138,14 +134,19 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
   // shares in a loop of their own (vectorised), the rest with the forces' scatter.
   const double dt = update->dt;
   auto record_films = [&](const int *pair_i, const int *pair_j, int n) {
-    for (int c = 0; c < n; c++) capacity[c] = lub::film_share_of_capacity(film[c], capacity[c], dt);
-    for (int c = 0; c < n; c++) record_film(pair_i[c], pair_j[c], film[c], capacity[c], nlocal, newton_pair);
+    for (int c = 0; c < n; c++)
+      capacity[c] = lub::film_share_of_capacity(film[c], capacity[c], dt);
+    for (int c = 0; c < n; c++)
+      record_film(pair_i[c], pair_j[c], film[c], capacity[c], nlocal, newton_pair);
   };
   // At most one chunk of pairs of one model.
   auto film_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
-    if (atoms.inverse_mass) vector_pairs::film_only_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
-    else vector_pairs::film_only(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
-    for (int c = 0; c < n; c++) apply(pair_i[c], pair_j[c], fpair[c], 0.0);
+    if (atoms.inverse_mass)
+      vector_pairs::film_only_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+    else
+      vector_pairs::film_only(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+    for (int c = 0; c < n; c++)
+      apply(pair_i[c], pair_j[c], fpair[c], 0.0);
     if (budget) record_films(pair_i, pair_j, n);
   };
   auto kept_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
@@ -162,7 +163,8 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evalu
       nrest += !done[c];
     }
     if (budget && model.lubrication.active()) record_films(pair_i, pair_j, n);
-    for (int k = 0; k < nrest; k++) evaluate(pair_i[rest[k]], pair_j[rest[k]], 0);
+    for (int k = 0; k < nrest; k++)
+      evaluate(pair_i[rest[k]], pair_j[rest[k]], 0);
   };
   // A list in chunks, each grouped by type pair (a counting sort within the chunk, which
   // keeps the atoms' data in the cache) unless one model serves all.
@@ -295,9 +297,10 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   double **torque = atom->torque;
   const bool budget = WET && film_budget_now;
   if (budget) reserve_records(ncandidate + nfilm);
-  const double kick_time = lub::film_kick_time(dt, when != lub::Evaluation::step,
-                                               when == lub::Evaluation::midpoint_start);
-  auto evaluate = [&](const int i, const int j, const int jj) __attribute__((always_inline)) {
+  const double kick_time =
+      lub::film_kick_time(dt, when != lub::Evaluation::step, when == lub::Evaluation::midpoint_start);
+  auto evaluate = [&](const int i, const int j, const int jj) __attribute__((always_inline))
+  {
     const double delx = x[i][0] - x[j][0];
     const double dely = x[i][1] - x[j][1];
     const double delz = x[i][2] - x[j][2];
@@ -345,8 +348,8 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     const double r = std::sqrt(rsq);
     const double rinv = 1.0 / r;
     const double u_n = (dvx * delx + dvy * dely + dvz * delz) * rinv;
-    const double m_e = inverse ? lub::reduced_mass_of_inverses(inverse[i], inverse[j])
-                               : lub::reduced_mass(rmass[i], rmass[j]);
+    const double m_e =
+        inverse ? lub::reduced_mass_of_inverses(inverse[i], inverse[j]) : lub::reduced_mass(rmass[i], rmass[j]);
     if (m_e == 0.0) {    // neither atom can move (the vectorised loops give such pairs 0)
       forget();
       return;
@@ -364,17 +367,20 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
       const double del[3] = {delx, dely, delz};
       double dv[3] = {dvx, dvy, dvz};
       if (vi != v[i])
-        for (int d = 0; d < 3; d++) dv[d] = v[i][d] - v[j][d];
+        for (int d = 0; d < 3; d++)
+          dv[d] = v[i][d] - v[j][d];
       double shear[4] = {0.0, 0.0, 0.0, 0.0};    // the shear film's force on i and share
       const bool shear_budget = budget && shear_records;
-      tangential(i, j, jj, del, dv, rinv, r - radsum, u_n, film.value, m_e, fn.contact, ft, ti, tj,
-                 kick_time, shear_budget ? shear : nullptr);
+      tangential(i, j, jj, del, dv, rinv, r - radsum, u_n, film.value, m_e, fn.contact, ft, ti, tj, kick_time,
+                 shear_budget ? shear : nullptr);
       if (shear_budget)
         record_films(i, j, fn.lubrication, shear, lub::contact_film_share(share, shear[3]), nlocal, newton_pair);
       fx += ft[0], fy += ft[1], fz += ft[2];
-      for (int d = 0; d < 3; d++) torque[i][d] += ti[d];
+      for (int d = 0; d < 3; d++)
+        torque[i][d] += ti[d];
       if (newton_pair || j < nlocal)
-        for (int d = 0; d < 3; d++) torque[j][d] += tj[d];
+        for (int d = 0; d < 3; d++)
+          torque[j][d] += tj[d];
     }
     f[i][0] += fx;
     f[i][1] += fy;

@@ -10,8 +10,7 @@ namespace lub = lubricated;
 
 // x86-64-v3 (AVX2) and v4 (AVX-512) have the gathers the loops need; elsewhere they run scalar.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
-#define VECTOR_PAIRS_CLONES \
-  __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#define VECTOR_PAIRS_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #else
 #define VECTOR_PAIRS_CLONES
 #endif
@@ -19,129 +18,125 @@ namespace lub = lubricated;
 namespace LAMMPS_NS {
 namespace vector_pairs {
 
-  // What every pair needs: separation, normal velocity, radii and reduced mass (INVERSE:
-  // from the inverse contact masses; 0 for two immovable atoms, whose forces are then 0).
-  struct Geometry {
-    double delx, dely, delz, r, rinv, u_n, radsum, m_e;
-    lub::FilmRadius film;
-  };
+// What every pair needs: separation, normal velocity, radii and reduced mass (INVERSE:
+// from the inverse contact masses; 0 for two immovable atoms, whose forces are then 0).
+struct Geometry {
+  double delx, dely, delz, r, rinv, u_n, radsum, m_e;
+  lub::FilmRadius film;
+};
 
-  template <bool INVERSE>
-  __attribute__((always_inline)) static inline Geometry geometry(const Atoms &atoms, int i, int j)
-  {
-    const double *__restrict x = atoms.x;
-    const double *__restrict v = atoms.v;
-    Geometry g;
-    g.delx = x[3 * i] - x[3 * j];
-    g.dely = x[3 * i + 1] - x[3 * j + 1];
-    g.delz = x[3 * i + 2] - x[3 * j + 2];
-    const double dvx = v[3 * i] - v[3 * j];
-    const double dvy = v[3 * i + 1] - v[3 * j + 1];
-    const double dvz = v[3 * i + 2] - v[3 * j + 2];
-    g.r = std::sqrt(g.delx * g.delx + g.dely * g.dely + g.delz * g.delz);
-    g.rinv = 1.0 / g.r;
-    g.u_n = (dvx * g.delx + dvy * g.dely + dvz * g.delz) * g.rinv;
-    const double radi = atoms.radius[i], radj = atoms.radius[j];
-    g.radsum = radi + radj;
-    g.film = lub::film_radius_pair(radi, radj);
-    if (INVERSE) g.m_e = lub::reduced_mass_of_inverses(atoms.inverse_mass[i], atoms.inverse_mass[j]);
-    else g.m_e = atoms.rmass[i] * atoms.rmass[j] / (atoms.rmass[i] + atoms.rmass[j]);
-    return g;
-  }
+template <bool INVERSE> __attribute__((always_inline)) static inline Geometry geometry(const Atoms &atoms, int i, int j)
+{
+  const double *__restrict x = atoms.x;
+  const double *__restrict v = atoms.v;
+  Geometry g;
+  g.delx = x[3 * i] - x[3 * j];
+  g.dely = x[3 * i + 1] - x[3 * j + 1];
+  g.delz = x[3 * i + 2] - x[3 * j + 2];
+  const double dvx = v[3 * i] - v[3 * j];
+  const double dvy = v[3 * i + 1] - v[3 * j + 1];
+  const double dvz = v[3 * i + 2] - v[3 * j + 2];
+  g.r = std::sqrt(g.delx * g.delx + g.dely * g.dely + g.delz * g.delz);
+  g.rinv = 1.0 / g.r;
+  g.u_n = (dvx * g.delx + dvy * g.dely + dvz * g.delz) * g.rinv;
+  const double radi = atoms.radius[i], radj = atoms.radius[j];
+  g.radsum = radi + radj;
+  g.film = lub::film_radius_pair(radi, radj);
+  if (INVERSE)
+    g.m_e = lub::reduced_mass_of_inverses(atoms.inverse_mass[i], atoms.inverse_mass[j]);
+  else
+    g.m_e = atoms.rmass[i] * atoms.rmass[j] / (atoms.rmass[i] + atoms.rmass[j]);
+  return g;
+}
 
-  template <bool GRID, bool INVERSE>
-  __attribute__((always_inline)) static inline void film_only_loop(
-      const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
-      const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
-      double *__restrict capacity)
-  {
-    const double dt = model.step.dt, inv_dt = model.step.inv_dt;
-    for (int c = 0; c < n; c++) {
-      const Geometry g = geometry<INVERSE>(atoms, pair_i[c], pair_j[c]);
-      const double film = lub::film_force_apart<GRID>(model.lubrication, g.r - g.radsum, g.film, g.m_e,
-                                                      g.u_n, dt, inv_dt);
-      fpair[c] = g.rinv * film;
-      film_force[c] = film;
-      capacity[c] = lub::film_capacity(g.m_e, g.u_n);
-    }
+template <bool GRID, bool INVERSE> __attribute__((always_inline)) static inline void
+film_only_loop(const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
+               const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
+               double *__restrict capacity)
+{
+  const double dt = model.step.dt, inv_dt = model.step.inv_dt;
+  for (int c = 0; c < n; c++) {
+    const Geometry g = geometry<INVERSE>(atoms, pair_i[c], pair_j[c]);
+    const double film =
+        lub::film_force_apart<GRID>(model.lubrication, g.r - g.radsum, g.film, g.m_e, g.u_n, dt, inv_dt);
+    fpair[c] = g.rinv * film;
+    film_force[c] = film;
+    capacity[c] = lub::film_capacity(g.m_e, g.u_n);
   }
+}
 
-  template <bool WET, bool GRID, bool INVERSE>
-  __attribute__((always_inline)) static inline void contact_or_film_loop(
-      const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
-      const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
-      double *__restrict capacity, double *__restrict energy, int *__restrict done)
-  {
-    const double dt = model.step.dt, inv_dt = model.step.inv_dt;
-    for (int c = 0; c < n; c++) {
-      const Geometry g = geometry<INVERSE>(atoms, pair_i[c], pair_j[c]);
-      const double gap = g.r - g.radsum;
-      bool sustained;
-      const lub::NormalForce contact =
-          lub::sustained_contact_force<GRID>(model, gap, g.film, g.m_e, g.u_n, sustained);
-      // Apart over the step (no contact can act): the film alone, as in film_only.
-      const bool apart = !lub::contact_possible(gap, g.u_n, dt);
-      const double film =
-          WET ? lub::film_force_apart<GRID>(model.lubrication, gap, g.film, g.m_e, g.u_n, dt, inv_dt) : 0.0;
-      const bool known = (sustained | apart) & (g.r > 0.0);
-      fpair[c] = known ? (sustained ? contact.total() : film) * g.rinv : 0.0;
-      // The shares themselves are divided out by the caller: with that division in it, GCC 12
-      // no longer if-converts (and vectorises) this loop.
-      film_force[c] = WET & known ? (sustained ? contact.lubrication : film) : 0.0;
-      capacity[c] = lub::film_capacity(g.m_e, g.u_n);
-      energy[c] = known & sustained ? contact.energy : 0.0;
-      done[c] = known;
-    }
+template <bool WET, bool GRID, bool INVERSE> __attribute__((always_inline)) static inline void
+contact_or_film_loop(const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
+                     const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
+                     double *__restrict capacity, double *__restrict energy, int *__restrict done)
+{
+  const double dt = model.step.dt, inv_dt = model.step.inv_dt;
+  for (int c = 0; c < n; c++) {
+    const Geometry g = geometry<INVERSE>(atoms, pair_i[c], pair_j[c]);
+    const double gap = g.r - g.radsum;
+    bool sustained;
+    const lub::NormalForce contact = lub::sustained_contact_force<GRID>(model, gap, g.film, g.m_e, g.u_n, sustained);
+    // Apart over the step (no contact can act): the film alone, as in film_only.
+    const bool apart = !lub::contact_possible(gap, g.u_n, dt);
+    const double film =
+        WET ? lub::film_force_apart<GRID>(model.lubrication, gap, g.film, g.m_e, g.u_n, dt, inv_dt) : 0.0;
+    const bool known = (sustained | apart) & (g.r > 0.0);
+    fpair[c] = known ? (sustained ? contact.total() : film) * g.rinv : 0.0;
+    // The shares themselves are divided out by the caller: with that division in it, GCC 12
+    // no longer if-converts (and vectorises) this loop.
+    film_force[c] = WET & known ? (sustained ? contact.lubrication : film) : 0.0;
+    capacity[c] = lub::film_capacity(g.m_e, g.u_n);
+    energy[c] = known & sustained ? contact.energy : 0.0;
+    done[c] = known;
   }
+}
 
-  // Each entry point compiles its own loops (the plain ones exactly as without contact masses).
-  VECTOR_PAIRS_CLONES
-  void film_only(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
-                 const int *pair_j, int n, double *fpair, double *film, double *capacity)
-  {
-    if (model.lubrication.grid_spacing > 0.0)
-      film_only_loop<true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
-    else
-      film_only_loop<false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
-  }
+// Each entry point compiles its own loops (the plain ones exactly as without contact masses).
+VECTOR_PAIRS_CLONES
+void film_only(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n,
+               double *fpair, double *film, double *capacity)
+{
+  if (model.lubrication.grid_spacing > 0.0)
+    film_only_loop<true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+  else
+    film_only_loop<false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+}
 
-  VECTOR_PAIRS_CLONES
-  void film_only_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
-                            const int *pair_j, int n, double *fpair, double *film, double *capacity)
-  {
-    if (model.lubrication.grid_spacing > 0.0)
-      film_only_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
-    else
-      film_only_loop<false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
-  }
+VECTOR_PAIRS_CLONES
+void film_only_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j,
+                          int n, double *fpair, double *film, double *capacity)
+{
+  if (model.lubrication.grid_spacing > 0.0)
+    film_only_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+  else
+    film_only_loop<false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+}
 
-  VECTOR_PAIRS_CLONES
-  void contact_or_film(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
-                       const int *pair_j, int n, double *fpair, double *film, double *capacity,
-                       double *energy, int *done)
-  {
-    const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
-    if (!wet)
-      contact_or_film_loop<false, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-    else if (grid)
-      contact_or_film_loop<true, true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-    else
-      contact_or_film_loop<true, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-  }
+VECTOR_PAIRS_CLONES
+void contact_or_film(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n,
+                     double *fpair, double *film, double *capacity, double *energy, int *done)
+{
+  const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
+  if (!wet)
+    contact_or_film_loop<false, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  else if (grid)
+    contact_or_film_loop<true, true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  else
+    contact_or_film_loop<true, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+}
 
-  VECTOR_PAIRS_CLONES
-  void contact_or_film_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i,
-                                  const int *pair_j, int n, double *fpair, double *film, double *capacity,
-                                  double *energy, int *done)
-  {
-    const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
-    if (!wet)
-      contact_or_film_loop<false, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-    else if (grid)
-      contact_or_film_loop<true, true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-    else
-      contact_or_film_loop<true, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-  }
+VECTOR_PAIRS_CLONES
+void contact_or_film_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j,
+                                int n, double *fpair, double *film, double *capacity, double *energy, int *done)
+{
+  const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
+  if (!wet)
+    contact_or_film_loop<false, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  else if (grid)
+    contact_or_film_loop<true, true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  else
+    contact_or_film_loop<true, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+}
 
 }    // namespace vector_pairs
 }    // namespace LAMMPS_NS

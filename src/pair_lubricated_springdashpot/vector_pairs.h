@@ -16,35 +16,34 @@
 namespace LAMMPS_NS {
 namespace vector_pairs {
 
-  // Per-atom data: x and v 3 per atom, contiguous (LAMMPS's x[0], v[0]). inverse_mass: the
-  // inverse contact masses (contact_mass.h) where a run has immovable atoms or rigid bodies,
-  // else nullptr (m_e from rmass).
-  struct Atoms {
-    const double *x, *v, *radius, *rmass, *inverse_mass;
-  };
+// Per-atom data: x and v 3 per atom, contiguous (LAMMPS's x[0], v[0]). inverse_mass: the
+// inverse contact masses (contact_mass.h) where a run has immovable atoms or rigid bodies,
+// else nullptr (m_e from rmass).
+struct Atoms {
+  const double *x, *v, *radius, *rmass, *inverse_mass;
+};
 
-  // The pairs (pair_i[c], pair_j[c]), c < n, all of model `model` (exact integration, a step).
-  // fpair[c] = force / r: the force on i is fpair (x_i - x_j), on j the opposite; film[c] the
-  // film part of the force (along n, not divided by r) and capacity[c] = m_e |u_n|, from which
-  // the caller takes the pair's share of the many-body film budget (lubricated/film_budget.h).
+// The pairs (pair_i[c], pair_j[c]), c < n, all of model `model` (exact integration, a step).
+// fpair[c] = force / r: the force on i is fpair (x_i - x_j), on j the opposite; film[c] the
+// film part of the force (along n, not divided by r) and capacity[c] = m_e |u_n|, from which
+// the caller takes the pair's share of the many-body film budget (lubricated/film_budget.h).
 
-  // Pairs apart by more than both atoms move in the step, with an active film.
-  void film_only(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
-                 const int *pair_j, int n, double *fpair, double *film, double *capacity);
+// Pairs apart by more than both atoms move in the step, with an active film.
+void film_only(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i, const int *pair_j, int n,
+               double *fpair, double *film, double *capacity);
 
-  // Pairs that may touch within the step: done[c] = 1 where pair c is in sustained contact or
-  // stays apart over the step (the film alone), with its fpair and spring energy[c]; 0 where
-  // a contact starts or ends, for the general loop (fpair, energy 0).
-  void contact_or_film(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
-                       const int *pair_j, int n, double *fpair, double *film, double *capacity,
-                       double *energy, int *done);
+// Pairs that may touch within the step: done[c] = 1 where pair c is in sustained contact or
+// stays apart over the step (the film alone), with its fpair and spring energy[c]; 0 where
+// a contact starts or ends, for the general loop (fpair, energy 0).
+void contact_or_film(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i, const int *pair_j,
+                     int n, double *fpair, double *film, double *capacity, double *energy, int *done);
 
-  // The same with m_e from atoms.inverse_mass (a pair of two immovable atoms: all 0, done).
-  void film_only_by_inverse(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
-                            const int *pair_j, int n, double *fpair, double *film, double *capacity);
-  void contact_or_film_by_inverse(const Atoms &atoms, const lubricated::NormalModel &model,
-                                  const int *pair_i, const int *pair_j, int n, double *fpair,
-                                  double *film, double *capacity, double *energy, int *done);
+// The same with m_e from atoms.inverse_mass (a pair of two immovable atoms: all 0, done).
+void film_only_by_inverse(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
+                          const int *pair_j, int n, double *fpair, double *film, double *capacity);
+void contact_or_film_by_inverse(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
+                                const int *pair_j, int n, double *fpair, double *film, double *capacity, double *energy,
+                                int *done);
 
 }    // namespace vector_pairs
 }    // namespace LAMMPS_NS

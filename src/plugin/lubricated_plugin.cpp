@@ -16,8 +16,8 @@
 using namespace LAMMPS_NS;
 
 extern "C" {
-typedef void *(lammpsplugin_factory1) (void *);
-typedef void *(lammpsplugin_factory2) (void *, int, char **);
+typedef void *(lammpsplugin_factory1)(void *);
+typedef void *(lammpsplugin_factory2)(void *, int, char **);
 
 typedef struct {
   const char *version;
@@ -34,8 +34,7 @@ typedef struct {
 
 typedef void (*lammpsplugin_regfunc)(lammpsplugin_t *, void *);
 
-__attribute__((visibility("default"))) void lammpsplugin_init(void *lmp, void *handle,
-                                                               void *regfunc);
+__attribute__((visibility("default"))) void lammpsplugin_init(void *lmp, void *handle, void *regfunc);
 }
 
 static Pair *create_pair(LAMMPS *lmp)
@@ -65,7 +64,7 @@ static Fix *create_fix_midpoint(LAMMPS *lmp, int narg, char **arg)
 
 void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
 {
-  auto reg = (lammpsplugin_regfunc) regfunc;
+  auto reg = (lammpsplugin_regfunc)regfunc;
   const char *version = static_cast<LAMMPS *>(lmp)->version;
   lammpsplugin_t plugin;
 
@@ -74,30 +73,30 @@ void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "lubricated/springdashpot";
   plugin.info = "lubricated spring-dashpot collisions (Brandle de Motta et al. 2011)";
   plugin.author = "lubricated-dem developers";
-  plugin.creator.v1 = (lammpsplugin_factory1 *) &create_pair;
+  plugin.creator.v1 = (lammpsplugin_factory1 *)&create_pair;
   plugin.handle = handle;
   (*reg)(&plugin, lmp);
 
   plugin.style = "fix";
   plugin.name = "wall/lubrication";
   plugin.info = "planar walls with lubricated spring-dashpot contact";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_wall;
+  plugin.creator.v2 = (lammpsplugin_factory2 *)&create_fix_wall;
   (*reg)(&plugin, lmp);
 
   plugin.name = "nve/sphere/midpoint";
   plugin.info = "time integration of Brandle de Motta et al. 2011 for spheres";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_midpoint;
+  plugin.creator.v2 = (lammpsplugin_factory2 *)&create_fix_midpoint;
   (*reg)(&plugin, lmp);
 
   plugin.name = "fluid/drag";
   plugin.info = "drag, hindered settling and buoyancy of an unresolved fluid on spheres";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_drag;
+  plugin.creator.v2 = (lammpsplugin_factory2 *)&create_fix_drag;
   (*reg)(&plugin, lmp);
 
   // Internal: created by the pair style for friction, never typed by users.
   plugin.name = "LUBRICATED_HISTORY";
   plugin.info = "contact history of pair_style lubricated/springdashpot";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_history;
+  plugin.creator.v2 = (lammpsplugin_factory2 *)&create_fix_history;
   (*reg)(&plugin, lmp);
 
   // Which fix setforce holds its atoms (contact_mass.h): noted as each is created.

@@ -26,7 +26,8 @@ static std::string parse(const std::string &line, Coefficients &c)
 {
   std::istringstream in(line);
   std::vector<std::string> words;
-  for (std::string w; in >> w;) words.push_back(w);
+  for (std::string w; in >> w;)
+    words.push_back(w);
   return parse_coefficients(words, 0, c);
 }
 
@@ -76,17 +77,18 @@ TEST_P(Rejects, WithAMessageNamingTheParameter)
 
 INSTANTIATE_TEST_SUITE_P(
     BadValues, Rejects,
-    ::testing::Values(BadInput{"0", "e_d = 0"}, BadInput{"-0.5", "0 < e_d <= 1"},
-                      BadInput{"1.01", "e_d = 1.01"}, BadInput{"nan", "e_d"},
-                      BadInput{"abc", "e_d, got 'abc'"}, BadInput{"", "missing e_d"},
+    ::testing::Values(BadInput{"0", "e_d = 0"}, BadInput{"-0.5", "0 < e_d <= 1"}, BadInput{"1.01", "e_d = 1.01"},
+                      BadInput{"nan", "e_d"}, BadInput{"abc", "e_d, got 'abc'"}, BadInput{"", "missing e_d"},
                       BadInput{"0.9 ncontact 0.5", "1 <= N_c <= 1e6"},
                       BadInput{"0.9 tcontact 0", "tcontact = 0 is out of range (allowed: 1e-100 <= t_c <= 1e100)"},
                       BadInput{"0.9 ncontact 8 tcontact 1", "mutually exclusive"},
-                      BadInput{"0.9 viscosity -1", "viscosity = -1 is out of range (allowed: mu_f = 0 (dry) or 1e-100 <= mu_f <= 1e100)"},
+                      BadInput{"0.9 viscosity -1",
+                               "viscosity = -1 is out of range (allowed: mu_f = 0 (dry) or 1e-100 <= mu_f <= 1e100)"},
                       BadInput{"0.9 viscosity 1e-3", "activation"},
                       BadInput{"0.9 viscosity 1e-3 activation 1e-4", "eps_al"},
                       BadInput{"0.9 viscosity 1e-3 activation 2", "eps_al <= 1"},
-                      BadInput{"0.9 viscosity 1e-3 grid -1", "grid = -1 is out of range (allowed: 1e-100 <= dx <= 1e100)"},
+                      BadInput{"0.9 viscosity 1e-3 grid -1",
+                               "grid = -1 is out of range (allowed: 1e-100 <= dx <= 1e100)"},
                       BadInput{"0.9 viscosity 1e-3 grid 1 activation 0.1", "mutually exclusive"},
                       BadInput{"0.9 saturation 0", "saturation = 0 is out of range (allowed: 1e-12 <= eps_1 < 1)"},
                       BadInput{"0.9 saturation 1e-3 release 1e-3", "eps_2 < eps_1"},
@@ -193,8 +195,7 @@ TEST(Coefficients, MessagesQuoteValuesAsTyped)
   EXPECT_NE(parse("1.5", c).find("e_d = 1.5 is out of range"), std::string::npos);
   ASSERT_EQ(parse("0.9 tcontact 1e-6", c), "");
   const std::string message = validate_time_step(c, 5e-5);
-  EXPECT_NE(message.find("tcontact = 1e-06 is shorter than the time step 5e-05"), std::string::npos)
-      << message;
+  EXPECT_NE(message.find("tcontact = 1e-06 is shorter than the time step 5e-05"), std::string::npos) << message;
 }
 
 // check_setup: the checks and description every adapter (pair style, wall, LIGGGHTS) reports.

@@ -39,16 +39,19 @@ Network random_network(std::mt19937_64 &rng, int n, double box, double load_lo, 
   for (int i = 0; i < n; i++) {
     r[i] = 0.1 * std::exp(std::log(10.0) * u(rng));
     net.mass.push_back(r[i] * r[i] * r[i]);
-    for (int d = 0; d < 3; d++) x[3 * i + d] = box * u(rng);
+    for (int d = 0; d < 3; d++)
+      x[3 * i + d] = box * u(rng);
   }
   for (int i = 0; i < n; i++)
     for (int j = i + 1; j < n; j++) {
       double del[3], rsq = 0.0;
-      for (int d = 0; d < 3; d++) del[d] = x[3 * i + d] - x[3 * j + d], rsq += del[d] * del[d];
+      for (int d = 0; d < 3; d++)
+        del[d] = x[3 * i + d] - x[3 * j + d], rsq += del[d] * del[d];
       if (rsq >= (r[i] + r[j]) * (r[i] + r[j])) continue;
-      Contact c{i, j, {}, net.mass[i] * net.mass[j] / (net.mass[i] + net.mass[j]),
-                load_lo + (load_hi - load_lo) * u(rng)};
-      for (int d = 0; d < 3; d++) c.n[d] = del[d] / std::sqrt(rsq);
+      Contact c{
+          i, j, {}, net.mass[i] * net.mass[j] / (net.mass[i] + net.mass[j]), load_lo + (load_hi - load_lo) * u(rng)};
+      for (int d = 0; d < 3; d++)
+        c.n[d] = del[d] / std::sqrt(rsq);
       net.contacts.push_back(c);
     }
   return net;
@@ -63,8 +66,7 @@ double project(const Network &net, const Contact &c, const std::vector<double> &
 }
 
 // out += sum_k w_k b_k (b_k . y), w_k = weight * s_k (or weight if unit).
-void accumulate(const Network &net, const std::vector<double> &y, double weight, bool unit,
-                std::vector<double> &out)
+void accumulate(const Network &net, const std::vector<double> &y, double weight, bool unit, std::vector<double> &out)
 {
   for (const Contact &c : net.contacts) {
     const double a = weight * (unit ? 1.0 : c.s) * project(net, c, y) * std::sqrt(c.m_e);
@@ -79,16 +81,20 @@ double largest_eigenvalue(const Network &net, std::mt19937_64 &rng, bool unit = 
 {
   std::normal_distribution<double> normal;
   std::vector<double> y(3 * net.mass.size());
-  for (double &v : y) v = normal(rng);
+  for (double &v : y)
+    v = normal(rng);
   double lambda = 0.0;
   for (int it = 0; it < 1500; it++) {
     double norm = 0.0;
-    for (double v : y) norm += v * v;
-    for (double &v : y) v /= std::sqrt(norm);
+    for (double v : y)
+      norm += v * v;
+    for (double &v : y)
+      v /= std::sqrt(norm);
     std::vector<double> z(y.size(), 0.0);
     accumulate(net, y, 1.0, unit, z);
     lambda = 0.0;
-    for (std::size_t k = 0; k < y.size(); k++) lambda += y[k] * z[k];    // Rayleigh quotient
+    for (std::size_t k = 0; k < y.size(); k++)
+      lambda += y[k] * z[k];    // Rayleigh quotient
     y = z;
   }
   return lambda;
@@ -118,11 +124,14 @@ double largest_amplitude(const Network &net, double kappa, double gamma, int ste
   const std::size_t size = 3 * net.mass.size();
   std::vector<double> y(size), last(size), next(size), diff(size), force(size);
   double norm = 0.0;
-  for (double &v : y) v = normal(rng), norm += v * v;
-  for (std::size_t q = 0; q < size; q++) last[q] = y[q] /= std::sqrt(norm);
+  for (double &v : y)
+    v = normal(rng), norm += v * v;
+  for (std::size_t q = 0; q < size; q++)
+    last[q] = y[q] /= std::sqrt(norm);
   double largest = 1.0;
   for (int n = 0; n < steps && largest < 1e9; n++) {
-    for (std::size_t q = 0; q < size; q++) diff[q] = y[q] - last[q], force[q] = 0.0;
+    for (std::size_t q = 0; q < size; q++)
+      diff[q] = y[q] - last[q], force[q] = 0.0;
     accumulate(net, y, kappa, true, force);
     accumulate(net, diff, gamma, true, force);
     norm = 0.0;
@@ -183,7 +192,7 @@ TEST(ContactNetwork, ThreeInARowIsExact)
   std::mt19937_64 rng(3);
   EXPECT_NEAR(largest_eigenvalue(net, rng), 3.0, 1e-9);    // 2 x 1.5
   EXPECT_NEAR(upper, 3.0, 1e-12);
-  EXPECT_NEAR(lower, 2.5, 1e-12);                           // 2 x 1.25
+  EXPECT_NEAR(lower, 2.5, 1e-12);    // 2 x 1.25
 }
 
 TEST(ContactNetwork, BoundsBracketTheLargestEigenvalue)
@@ -287,7 +296,8 @@ TEST(ContactNetwork, MessageNamesTheDurationAndARemedyThatHolds)
   f.largest_lower = 3.15;
   const std::string warning = network_message("model lubricated", c, dt, f);
   EXPECT_NE(warning.find("with tcontact = 2e-05 (N_c = t_c / dt = 2) the contact network of this packing "
-                         "is likely unstable: its load is at least 3.15"), std::string::npos);
+                         "is likely unstable: its load is at least 3.15"),
+            std::string::npos);
   EXPECT_NE(warning.find("reach the upper bound 5.36 >= 4"), std::string::npos);
   EXPECT_NE(warning.find("a longer tcontact or a timestep <="), std::string::npos);
 }

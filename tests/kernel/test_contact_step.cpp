@@ -115,8 +115,8 @@ TEST(ContactStep, MidpointStartWithinTheFirstHalfStepIsExact)
       for (int k = 0; k <= 20; ++k) {
         const ContactStep cs = make_contact_step(spring_dashpot_from_restitution(e, n_c), 1.0);
         const double start_gap = 0.5 * k / 20.0;    // contact within the first half step
-        EXPECT_NEAR(midpoint_rebound(cs, start_gap, -1.0), e, 1e-9) << "N_c=" << n_c << " e=" << e
-                                                                   << " gap=" << start_gap;
+        EXPECT_NEAR(midpoint_rebound(cs, start_gap, -1.0), e, 1e-9)
+            << "N_c=" << n_c << " e=" << e << " gap=" << start_gap;
       }
 }
 

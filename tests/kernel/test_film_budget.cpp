@@ -18,9 +18,9 @@ using namespace lubricated;
 namespace {
 
 struct Contact {
-  int i, j;            // j < 0: a wall
-  double n[3];         // unit normal
-  double damping;      // c_k dt [mass], within the contact's own cap c dt <= m_e
+  int i, j;          // j < 0: a wall
+  double n[3];       // unit normal
+  double damping;    // c_k dt [mass], within the contact's own cap c dt <= m_e
 };
 
 struct Scene {
@@ -59,16 +59,20 @@ double largest_eigenvalue(const Scene &s, const std::vector<double> &scale, std:
 {
   std::normal_distribution<double> normal;
   std::vector<double> y(3 * s.mass.size());
-  for (double &v : y) v = normal(rng);
+  for (double &v : y)
+    v = normal(rng);
   double lambda = 0.0;    // |A v| for the unit v of the last iteration
   for (int it = 0; it < 500; it++) {
     double norm = 0.0;
-    for (double v : y) norm += v * v;
+    for (double v : y)
+      norm += v * v;
     if (norm == 0.0) return 0.0;
-    for (double &v : y) v /= std::sqrt(norm);
+    for (double &v : y)
+      v /= std::sqrt(norm);
     y = apply(s, scale, y);
     lambda = 0.0;
-    for (double v : y) lambda += v * v;
+    for (double v : y)
+      lambda += v * v;
     lambda = std::sqrt(lambda);
   }
   return lambda;
@@ -102,7 +106,8 @@ Scene random_scene(std::mt19937_64 &rng, int n, int per_atom)
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::normal_distribution<double> normal;
   Scene s;
-  for (int i = 0; i < n; i++) s.mass.push_back(std::pow(10.0, -3.0 * uniform(rng)));
+  for (int i = 0; i < n; i++)
+    s.mass.push_back(std::pow(10.0, -3.0 * uniform(rng)));
   for (int i = 0; i < n; i++)
     for (int c = 0; c < per_atom; c++) {
       Contact k;
@@ -110,8 +115,10 @@ Scene random_scene(std::mt19937_64 &rng, int n, int per_atom)
       k.j = uniform(rng) < 0.1 ? -1 : static_cast<int>(uniform(rng) * n);
       if (k.j == i) continue;
       double norm = 0.0;
-      for (double &v : k.n) v = normal(rng), norm += v * v;
-      for (double &v : k.n) v /= std::sqrt(norm);
+      for (double &v : k.n)
+        v = normal(rng), norm += v * v;
+      for (double &v : k.n)
+        v /= std::sqrt(norm);
       k.damping = reduced(s, k) * (uniform(rng) < 0.5 ? 1.0 : uniform(rng));    // half of them at the cap
       s.contacts.push_back(k);
     }
@@ -181,8 +188,10 @@ TEST(FilmBudget, ShareBoundHoldsForEveryGapAndSpeed)
         Coefficients c;
         c.e_dry = 0.9;
         c.viscosity = mu;
-        if (grid > 0.0) c.grid_spacing = grid;
-        else c.eps_activation = 0.1;
+        if (grid > 0.0)
+          c.grid_spacing = grid;
+        else
+          c.eps_activation = 0.1;
         const NormalModel m = make_normal_model(c, partner, dt);
         const double bound = film_share_bound(m.lubrication, radius, m_e, dt);
         EXPECT_GT(bound, 0.0);
@@ -227,10 +236,10 @@ TEST(FilmBudget, ShareBoundHoldsForEveryGapAndSpeed)
 namespace {
 
 struct WetContact {
-  int i, j;                   // j < 0: a wall
-  double n[3], t1[3], t2[3];  // normal and an orthonormal tangent basis
-  double normal_share;        // a_n = c_n t_kick / m_e
-  double shear_share;         // a_t = c_t t_kick / m_t (from the film's force and slip)
+  int i, j;                     // j < 0: a wall
+  double n[3], t1[3], t2[3];    // normal and an orthonormal tangent basis
+  double normal_share;          // a_n = c_n t_kick / m_e
+  double shear_share;           // a_t = c_t t_kick / m_t (from the film's force and slip)
 };
 
 struct WetScene {
@@ -239,7 +248,10 @@ struct WetScene {
   int size() const { return 6 * static_cast<int>(mass.size()); }
 };
 
-double inertia(const WetScene &s, int i) { return 0.4 * s.mass[i] * s.radius[i] * s.radius[i]; }
+double inertia(const WetScene &s, int i)
+{
+  return 0.4 * s.mass[i] * s.radius[i] * s.radius[i];
+}
 
 double reduced_mass(const WetScene &s, const WetContact &c)
 {
@@ -291,7 +303,8 @@ std::vector<double> film_matrix(const WetScene &s, const std::vector<double> &sc
     for (int q = 0; q < 3; q++)
       for (int r = 0; r < n; r++)
         if (v[q][r] != 0.0)
-          for (int col = 0; col < n; col++) a[r * n + col] += scale[k] * weight[q] * v[q][r] * v[q][col];
+          for (int col = 0; col < n; col++)
+            a[r * n + col] += scale[k] * weight[q] * v[q][r] * v[q][col];
   }
   return a;
 }
@@ -300,20 +313,25 @@ double largest_eigenvalue_of(const std::vector<double> &a, int n, std::mt19937_6
 {
   std::normal_distribution<double> normal;
   std::vector<double> y(n), z(n);
-  for (double &v : y) v = normal(rng);
+  for (double &v : y)
+    v = normal(rng);
   double lambda = 0.0;
   for (int it = 0; it < 800; it++) {
     double norm = 0.0;
-    for (double v : y) norm += v * v;
+    for (double v : y)
+      norm += v * v;
     if (norm == 0.0) return 0.0;
-    for (double &v : y) v /= std::sqrt(norm);
+    for (double &v : y)
+      v /= std::sqrt(norm);
     for (int r = 0; r < n; r++) {
       z[r] = 0.0;
-      for (int col = 0; col < n; col++) z[r] += a[r * n + col] * y[col];
+      for (int col = 0; col < n; col++)
+        z[r] += a[r * n + col] * y[col];
     }
     y = z;
     lambda = 0.0;
-    for (double v : y) lambda += v * v;
+    for (double v : y)
+      lambda += v * v;
     lambda = std::sqrt(lambda);
   }
   return lambda;
@@ -346,20 +364,23 @@ std::vector<double> wet_budget_scales(const WetScene &s, bool with_shear, double
   return scale;
 }
 
-WetContact random_wet_contact(std::mt19937_64 &rng, int i, int j, double cap_fraction_normal,
-                              double cap_fraction_shear)
+WetContact random_wet_contact(std::mt19937_64 &rng, int i, int j, double cap_fraction_normal, double cap_fraction_shear)
 {
   std::normal_distribution<double> normal;
   WetContact c{};
   c.i = i, c.j = j;
   double norm = 0.0;
-  for (double &v : c.n) v = normal(rng), norm += v * v;
-  for (double &v : c.n) v /= std::sqrt(norm);
+  for (double &v : c.n)
+    v = normal(rng), norm += v * v;
+  for (double &v : c.n)
+    v /= std::sqrt(norm);
   double r[3];
-  for (double &v : r) v = normal(rng);
+  for (double &v : r)
+    v = normal(rng);
   cross3(c.n, r, c.t1);
   norm = std::sqrt(c.t1[0] * c.t1[0] + c.t1[1] * c.t1[1] + c.t1[2] * c.t1[2]);
-  for (double &v : c.t1) v /= norm;
+  for (double &v : c.t1)
+    v /= norm;
   cross3(c.n, c.t1, c.t2);
   c.normal_share = cap_fraction_normal;
   c.shear_share = cap_fraction_shear;
@@ -403,7 +424,8 @@ TEST(FilmBudget, ShearFilmModeHasTheTangentialMass)
     const auto v = modes(s, c);
     auto dot_of = [&](int a, int b) {
       double p = 0.0;
-      for (int r = 0; r < s.size(); r++) p += v[a][r] * v[b][r];
+      for (int r = 0; r < s.size(); r++)
+        p += v[a][r] * v[b][r];
       return p;
     };
     const double m_e = reduced_mass(s, c);
@@ -436,8 +458,7 @@ TEST(FilmBudget, DenseScenesWithShearFilmsNeverGainEnergyWithRotation)
   std::mt19937_64 rng(20260917);
   for (int trial = 0; trial < 30; trial++) {
     const WetScene s = random_wet_scene(rng, 3 + trial % 10, 1 + trial % 12, trial % 2 ? 1.0 : 0.1);
-    const double lambda =
-        largest_eigenvalue_of(film_matrix(s, wet_budget_scales(s, true, 1e-3)), s.size(), rng);
+    const double lambda = largest_eigenvalue_of(film_matrix(s, wet_budget_scales(s, true, 1e-3)), s.size(), rng);
     EXPECT_LE(lambda, 1.0 + 1e-9) << "trial " << trial;    // 0 <= A <= I, rotation included
   }
 }

@@ -41,11 +41,11 @@ TEST_P(Film, ZonesOfTheActivationTable)
   EXPECT_NEAR(lub.damping(eps_al * (1 - 1e-9), R), 0.0, 1e-6 * six_pi_mu_R);
   // Lubrication zone: the formula.
   const double eps = 0.02;
-  EXPECT_DOUBLE_EQ(lub.damping(eps, R),
-                   six_pi_mu_R * (lambda_of(partner, eps) - lambda_of(partner, eps_al)));
+  EXPECT_DOUBLE_EQ(lub.damping(eps, R), six_pi_mu_R * (lambda_of(partner, eps) - lambda_of(partner, eps_al)));
   // Saturated between eps_2 and eps_1, also in overlap, equal to its eps_1 value.
   const double sat = six_pi_mu_R * (lambda_of(partner, eps1) - lambda_of(partner, eps_al));
-  for (double e : {eps1, 5e-4, 1e-6, 0.0, -1e-3, -0.0099}) EXPECT_DOUBLE_EQ(lub.damping(e, R), sat);
+  for (double e : {eps1, 5e-4, 1e-6, 0.0, -1e-3, -0.0099})
+    EXPECT_DOUBLE_EQ(lub.damping(e, R), sat);
   // Continuous at eps_1 from above.
   EXPECT_NEAR(lub.damping(eps1 * (1 + 1e-9), R), sat, 1e-6 * sat);
   // Deep overlap: released.
@@ -158,7 +158,7 @@ TEST_P(Film, GridSpacingGivesTheSameImpulseAsItsActivationGap)
   const double R = 1e-3;
   const Lubrication fixed = make_lubrication(GetParam(), 1e-3, 0.1, 0.0, 1e-3, -1e-2);
   const Lubrication grid = make_lubrication(GetParam(), 1e-3, 0.0, 0.1 * R / 0.75, 1e-3, -1e-2);
-  const double gaps[][2] = {{0.15, 0.05}, {0.05, 0.004}, {0.004, 5e-4}, {5e-4, -3e-3},
+  const double gaps[][2] = {{0.15, 0.05},   {0.05, 0.004}, {0.004, 5e-4}, {5e-4, -3e-3},
                             {-3e-3, -2e-2}, {-2e-2, 5e-4}, {8e-4, 2e-4}};
   for (const auto &g : gaps) {
     const double expected = fixed.impulse(g[0] * R, g[1] * R, R);

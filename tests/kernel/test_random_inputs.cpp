@@ -36,10 +36,13 @@ Coefficients random_coefficients(Draw &d, bool extremes = false)
   if (d.chance(0.5)) {
     c.viscosity = far ? d.log_uniform(1e-100, 1e100) : d.log_uniform(1e-6, 10.0);
     c.eps_saturation = d.log_uniform(far ? 1e-12 : 1e-6, 0.1);
-    if (d.chance(0.3)) c.grid_spacing = d.log_uniform(1e-6, 1e-1);    // some below eps_1 R
-    else c.eps_activation = d.uniform(c.eps_saturation, 1.0);
+    if (d.chance(0.3))
+      c.grid_spacing = d.log_uniform(1e-6, 1e-1);    // some below eps_1 R
+    else
+      c.eps_activation = d.uniform(c.eps_saturation, 1.0);
     c.eps_release = d.chance(0.5) ? d.uniform(-0.1, 0.0) : d.uniform(0.0, c.eps_saturation);
-    if (d.chance(0.3) && c.eps_release >= 0.0) c.legendre = d.chance(0.5) ? 35.0 : d.log_uniform(0.1, far ? 1e300 : 1e3);
+    if (d.chance(0.3) && c.eps_release >= 0.0)
+      c.legendre = d.chance(0.5) ? 35.0 : d.log_uniform(0.1, far ? 1e300 : 1e3);
   }
   c.exact_contact = c.legendre > 0.0 || d.chance(0.8);
   return c;
@@ -69,13 +72,11 @@ TEST(RandomInputs, NormalForceIsFiniteAndTheFilmNeverReversesTheMotion)
       const Evaluation when = whens[state % 3];
       const NormalForce f = normal_force(m, gap, radius, mass, u_n, when);
       std::ostringstream where;
-      where << "e_d " << c.e_dry << " N_c " << c.n_contact << " mu " << c.viscosity << " eps_al "
-            << c.eps_activation << " dx " << c.grid_spacing << " eps_1 " << c.eps_saturation
-            << " eps_2 " << c.eps_release << " A " << c.legendre << " exact " << c.exact_contact
-            << " dt " << dt << " R " << radius << " m " << mass << " gap " << gap << " u_n "
-            << u_n << " when " << static_cast<int>(when);
-      ASSERT_TRUE(std::isfinite(f.contact) && std::isfinite(f.lubrication) && std::isfinite(f.energy))
-          << where.str();
+      where << "e_d " << c.e_dry << " N_c " << c.n_contact << " mu " << c.viscosity << " eps_al " << c.eps_activation
+            << " dx " << c.grid_spacing << " eps_1 " << c.eps_saturation << " eps_2 " << c.eps_release << " A "
+            << c.legendre << " exact " << c.exact_contact << " dt " << dt << " R " << radius << " m " << mass << " gap "
+            << gap << " u_n " << u_n << " when " << static_cast<int>(when);
+      ASSERT_TRUE(std::isfinite(f.contact) && std::isfinite(f.lubrication) && std::isfinite(f.energy)) << where.str();
       ASSERT_GE(f.energy, 0.0) << where.str();
       if (c.wet()) {
         // The film may stop the motion over the step (a run start: over the half kick, or the
@@ -99,7 +100,10 @@ Vec3 random_vector(Draw &d, double size)
   return {size * d.uniform(-1.0, 1.0), size * d.uniform(-1.0, 1.0), size * d.uniform(-1.0, 1.0)};
 }
 
-double length(const Vec3 &a) { return std::sqrt(dot(a, a)); }
+double length(const Vec3 &a)
+{
+  return std::sqrt(dot(a, a));
+}
 
 }    // namespace
 
@@ -116,8 +120,8 @@ TEST(RandomInputs, TangentialForcesAreFiniteAndNeverReverseTheSlip)
     if (!validate(c).empty()) continue;
     const double dt = d.log_uniform(1e-9, 1e-1);
     const TangentialModel tm = make_tangential_model(c, dt);
-    const Lubrication film = make_lubrication(Partner::particle, c.viscosity, c.eps_activation,
-                                              c.grid_spacing, c.eps_saturation, c.eps_release);
+    const Lubrication film = make_lubrication(Partner::particle, c.viscosity, c.eps_activation, c.grid_spacing,
+                                              c.eps_saturation, c.eps_release);
     for (int state = 0; state < 50; ++state) {
       const double radius = d.log_uniform(1e-7, 1.0), mass = d.log_uniform(1e-15, 1e3);
       const double m_t = tangential_mass_ratio * mass;
@@ -141,8 +145,8 @@ TEST(RandomInputs, TangentialForcesAreFiniteAndNeverReverseTheSlip)
       }
       if (tm.film_active()) {
         const double eps = d.chance(0.3) ? d.uniform(-0.5, 0.0) : d.log_uniform(1e-9, 2.0);
-        const Vec3 f = shear_film_force(tm, s, eps, film.activation_for(radius), film.eps_saturation,
-                                        film.eps_release, 0.5 * radius, m_t);
+        const Vec3 f = shear_film_force(tm, s, eps, film.activation_for(radius), film.eps_saturation, film.eps_release,
+                                        0.5 * radius, m_t);
         ASSERT_TRUE(std::isfinite(length(f)));
         ASSERT_LE(dot(f, s), 0.0) << "eps " << eps << " eps_al " << film.activation_for(radius);
         ASSERT_LE(length(f) * dt, m_t * length(s) * (1.0 + 1e-12));
@@ -163,24 +167,25 @@ TEST(RandomInputs, AcceptedCoefficientsGiveFiniteModelConstants)
   int accepted = 0;
   // Log-uniform over any span of the double range; mostly near the allowed range [lo, hi]
   // (ten decades either side), else anywhere from 1e-320 to 1e300.
-  auto wide = [&d](double lo, double hi) {
-    return std::exp(d.uniform(std::log(lo), std::log(hi)));
-  };
+  auto wide = [&d](double lo, double hi) { return std::exp(d.uniform(std::log(lo), std::log(hi))); };
   auto near = [&](double lo, double hi) {
-    return d.chance(0.8) ? wide(std::max(lo * 1e-10, 1e-320), std::min(hi * 1e10, 1e300))
-                         : wide(1e-320, 1e300);
+    return d.chance(0.8) ? wide(std::max(lo * 1e-10, 1e-320), std::min(hi * 1e10, 1e300)) : wide(1e-320, 1e300);
   };
   for (int trial = 0; trial < 1000000 && accepted < 3000; ++trial) {
     Coefficients c;
     c.e_dry = d.chance(0.1) ? 1.0 : wide(1e-320, 1.0);
-    if (d.chance(0.5)) c.n_contact = near(1.0, 1e6);
-    else c.t_contact = near(1e-100, 1e100);
+    if (d.chance(0.5))
+      c.n_contact = near(1.0, 1e6);
+    else
+      c.t_contact = near(1e-100, 1e100);
     const double dt = near(1e-106, 1e100);
     if (d.chance(0.7)) {
       c.viscosity = near(1e-100, 1e100);
       c.eps_saturation = near(1e-12, 1.0);
-      if (d.chance(0.5)) c.grid_spacing = near(1e-100, 1e100);
-      else c.eps_activation = d.log_uniform(std::min(c.eps_saturation, 1.0), 1.0);
+      if (d.chance(0.5))
+        c.grid_spacing = near(1e-100, 1e100);
+      else
+        c.eps_activation = d.log_uniform(std::min(c.eps_saturation, 1.0), 1.0);
       c.eps_release = d.chance(0.5) ? -near(1e-100, 1e100) : d.uniform(0.0, c.eps_saturation);
       if (c.eps_release >= 0.0 && d.chance(0.5)) c.legendre = near(1e-10, 1e10);
     } else if (d.chance(0.5)) {
@@ -192,9 +197,9 @@ TEST(RandomInputs, AcceptedCoefficientsGiveFiniteModelConstants)
     if (!validate(c).empty() || !validate_time_step(c, dt).empty()) continue;
     ++accepted;
     std::ostringstream where;
-    where << "e_d " << c.e_dry << " N_c " << c.n_contact << " t_c " << c.t_contact << " dt " << dt
-          << " mu " << c.viscosity << " eps_al " << c.eps_activation << " dx " << c.grid_spacing
-          << " eps_1 " << c.eps_saturation << " eps_2 " << c.eps_release << " A " << c.legendre;
+    where << "e_d " << c.e_dry << " N_c " << c.n_contact << " t_c " << c.t_contact << " dt " << dt << " mu "
+          << c.viscosity << " eps_al " << c.eps_activation << " dx " << c.grid_spacing << " eps_1 " << c.eps_saturation
+          << " eps_2 " << c.eps_release << " A " << c.legendre;
     for (Partner partner : {Partner::particle, Partner::wall}) {
       const NormalModel m = make_normal_model(c, partner, dt);
       const SpringDashpot &sd = m.contact;
@@ -208,7 +213,8 @@ TEST(RandomInputs, AcceptedCoefficientsGiveFiniteModelConstants)
       ASSERT_TRUE(std::isfinite(cs.damping_step) && cs.damping_step >= 0.0) << where.str();
       for (int k = 0; k <= ContactStep::table_size; ++k)
         ASSERT_TRUE(cs.exit_guess[k] >= 0.0 && cs.exit_guess[k] <= dt && cs.entry_guess[k] >= 0.0 &&
-                    cs.entry_guess[k] <= dt) << where.str();
+                    cs.entry_guess[k] <= dt)
+            << where.str();
       // The contact keeps e_d (exact for N_c >= 1.5; at most 1e-5 off at N_c = 1e6).
       const double e = restitution_of(sd);
       ASSERT_TRUE(std::isfinite(e)) << where.str();
@@ -217,7 +223,8 @@ TEST(RandomInputs, AcceptedCoefficientsGiveFiniteModelConstants)
       }
       const Lubrication &lub = m.lubrication;
       ASSERT_TRUE(std::isfinite(lub.six_pi_mu) && std::isfinite(lub.lambda_saturated) &&
-                  std::isfinite(lub.integral_saturated)) << where.str();
+                  std::isfinite(lub.integral_saturated))
+          << where.str();
       if (lub.active()) {
         // Film radii for which eps_al lies within [eps_1, 1] (a fixed eps_al does; a grid's
         // 0.75 dx / R does for R >= 0.75 dx).
@@ -257,7 +264,7 @@ TEST(RandomInputs, DragCoefficientIsFiniteAndPositive)
     const double voidage = d.chance(0.1) ? 0.0 : d.uniform(-0.5, 1.5);    // clamped inside
     const double beta = drag_beta(m, diameter, slip, voidage);
     ASSERT_TRUE(std::isfinite(beta) && beta > 0.0)
-        << "mu " << m.viscosity << " rho " << m.density << " d " << diameter << " w " << slip
-        << " voidage " << voidage << " law " << trial % 2 << " hindrance " << (trial / 2) % 3;
+        << "mu " << m.viscosity << " rho " << m.density << " d " << diameter << " w " << slip << " voidage " << voidage
+        << " law " << trial % 2 << " hindrance " << (trial / 2) % 3;
   }
 }

@@ -32,8 +32,10 @@ void draw_film(Draw &d, bool grid, Coefficients &c)
 {
   c.viscosity = d.log_uniform(1e-6, 10.0);
   c.eps_saturation = d.log_uniform(1e-6, 0.05);
-  if (grid) c.grid_spacing = d.log_uniform(1e-6, 1e-1);
-  else c.eps_activation = d.uniform(1.5 * c.eps_saturation, 1.0);
+  if (grid)
+    c.grid_spacing = d.log_uniform(1e-6, 1e-1);
+  else
+    c.eps_activation = d.uniform(1.5 * c.eps_saturation, 1.0);
   c.eps_release = d.uniform(-0.1, 0.0);
 }
 
@@ -56,7 +58,7 @@ double film_rounding(const NormalModel &m, const FilmRadius &radius, double dt)
   const Lubrication &lub = m.lubrication;
   const Lubrication::Activation al = lub.activation(radius);
   const double terms = std::fabs(al.integral) + std::fabs(lub.integral_saturated) +
-      (std::fabs(al.lambda) + std::fabs(lub.lambda_saturated)) * (al.eps + 0.1);
+                       (std::fabs(al.lambda) + std::fabs(lub.lambda_saturated)) * (al.eps + 0.1);
   return 1e-13 * lub.six_pi_mu * radius.value * radius.value * terms / dt;
 }
 
@@ -72,8 +74,8 @@ TEST(InlineLog, WithinFourUlpsOfTheLibraryOverTheNormalRange)
     // Close to 1 the logarithm is small: count its error against the size of x - 1 instead.
     const double reference = std::log(x);
     const double error = std::fabs(x - 1.0) < 0.5
-        ? std::fabs(log_inline(x) - reference) / std::fabs(x - 1.0) / 2.220446049250313e-16
-        : ulps(log_inline(x), reference);
+                             ? std::fabs(log_inline(x) - reference) / std::fabs(x - 1.0) / 2.220446049250313e-16
+                             : ulps(log_inline(x), reference);
     worst = std::max(worst, error);
   }
   EXPECT_LE(worst, 4.0);
@@ -147,9 +149,8 @@ TEST(SustainedContact, EqualsNormalForceWhereItApplies)
       // Overlap rates from creeping to leaving the overlap within the step, both signs.
       const double u_n = -gap / dt * d.log_uniform(1e-6, 3.0) * (state % 2 ? 1.0 : -1.0);
       bool sustained = false;
-      const NormalForce vector_form =
-          grid ? sustained_contact_force<true>(m, gap, radius, mass, u_n, sustained)
-               : sustained_contact_force<false>(m, gap, radius, mass, u_n, sustained);
+      const NormalForce vector_form = grid ? sustained_contact_force<true>(m, gap, radius, mass, u_n, sustained)
+                                           : sustained_contact_force<false>(m, gap, radius, mass, u_n, sustained);
       if (!sustained) {
         ++other_count;
         continue;

@@ -105,8 +105,7 @@ TEST(WetCalibration, SustainedContactIsUnchanged)
   const NormalModel calibrated = model(20.0, dt, 0.04, true, legendre_constant);
   // In overlap for the last step and the next: the same spring-dashpot.
   for (double u : {-0.5, -0.01, 0.01})
-    EXPECT_EQ(normal_force(plain, -0.01, 1.0, 1.0, u).contact,
-              normal_force(calibrated, -0.01, 1.0, 1.0, u).contact);
+    EXPECT_EQ(normal_force(plain, -0.01, 1.0, 1.0, u).contact, normal_force(calibrated, -0.01, 1.0, 1.0, u).contact);
 }
 
 TEST(WetCalibration, ExtremeInputsStayFiniteAndGainNoEnergy)
@@ -132,7 +131,8 @@ TEST(WetCalibration, ExtremeInputsStayFiniteAndGainNoEnergy)
               fastest = std::max(fastest, std::fabs(u));
             }
             const std::string where = "A=" + std::to_string(legendre) + " St=" + std::to_string(stokes) +
-                " N_c=" + std::to_string(n_c) + " e=" + std::to_string(e) + " dt=" + std::to_string(dt);
+                                      " N_c=" + std::to_string(n_c) + " e=" + std::to_string(e) +
+                                      " dt=" + std::to_string(dt);
             EXPECT_LE(fastest, 1.0 + 1e-9) << where;
             EXPECT_LE(std::max(u, 0.0), e * (1.0 + 1e-9)) << where;
           }

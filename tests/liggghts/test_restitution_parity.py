@@ -15,8 +15,7 @@ def test_dry_restitution_matches_lammps(run, kind, e_dry):
     lig = run.lig(build[0](e_dry))
     lmp = run.lmp(build[1](e_dry))
     assert lig["e"] == pytest.approx(lmp["e"], abs=1e-3)
-    assert lig["e"] == pytest.approx(e_dry, rel=0.01)           # doc/model.rst, "Solid contact:
-    the spring-dashpot": e = e_d
+    assert lig["e"] == pytest.approx(e_dry, rel=0.01)           # doc/model.rst: e = e_d
     assert abs(lig["contact_steps"] - 8) <= 1                     # contact lasts N_c steps
 
 
