@@ -129,6 +129,13 @@ void FixWallLubrication::init()
                  "{}: atom {} has diameter {} (allowed: > 0; a point particle has no contact "
                  "or film)",
                  STYLE, atom->tag[i], 2.0 * atom->radius[i]);
+  // With a grid spacing the smallest spheres have the largest eps_al (at most 1, as activation).
+  double r_min = INFINITY, r_min_all = INFINITY;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) r_min = std::min(r_min, atom->radius[i]);
+  MPI_Allreduce(&r_min, &r_min_all, 1, MPI_DOUBLE, MPI_MIN, world);
+  const std::string problem = lub::validate_grid_for_radius(coeffs, r_min_all);
+  if (!problem.empty()) error->all(FLERR, "{}: {}", STYLE, problem);
   films_pending = false;
 }
 

@@ -97,6 +97,10 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     MPI_Allreduce(&r_min, &r_min_all, 1, MPI_DOUBLE, MPI_MIN, world);
     const double reach =
         lubricated::liggghts::reach_fraction(coefficients_, ntypes_, is_wall_, r_min_all < none ? r_min_all : 0.0);
+    for (const lubricated::Coefficients &c : coefficients_) {
+      const std::string problem = lubricated::validate_grid_for_radius(c, r_min_all < none ? r_min_all : 0.0);
+      if (!problem.empty()) fail(std::string(caller) + ": " + lubricated::liggghts::with_property_names(problem));
+    }
     if (reach < 0.0)
       error->all(FLERR, "model lubricated: lubricatedGridSpacing needs the particles to exist "
                         "before the run (insert them first, or give lubricatedActivation)");

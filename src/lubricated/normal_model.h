@@ -82,6 +82,19 @@ inline EntryLoss entry_loss(const NormalModel &m, const FilmRadius &radius, doub
   return loss;
 }
 
+// With a grid spacing eps_al = 0.75 dx / R per contact; like a given activation it may not exceed
+// 1 (the film would start more than a radius away). R is smallest between the smallest spheres
+// (R = r for two of radius r, and at a wall), so the check takes the smallest radius present.
+inline std::string validate_grid_for_radius(const Coefficients &c, double smallest_radius)
+{
+  if (!(c.wet() && c.grid_spacing > 0.0 && smallest_radius > 0.0)) return "";
+  const double eps = Lubrication::grid_activation * c.grid_spacing / smallest_radius;
+  if (eps <= 1.0) return "";
+  return "grid = " + detail::number(c.grid_spacing) + " gives eps_al = 0.75 dx / R = " + detail::number(eps) +
+         " for the smallest spheres (R = " + detail::number(smallest_radius) +
+         ") (allowed: 0.75 dx / R <= 1, as activation <= 1)";
+}
+
 // The calibration can only remove speed: it acts at no St when the film alone, in and out,
 // takes more than the law allows, P(0)/c_inv (1 + 1/e_d) >= A (St -> infinity in
 // EntryLoss::start_speed). Advice for a fixed eps_al ("" when fine; with a grid spacing

@@ -251,6 +251,16 @@ void PairLubricatedSpringDashpot::init_style()
                  "{}: atom {} has diameter {} (allowed: > 0; a point particle has no contact "
                  "or film)",
                  STYLE, atom->tag[i], 2.0 * atom->radius[i]);
+  // With a grid spacing the smallest spheres have the largest eps_al (at most 1, as activation).
+  double r_min = INFINITY, r_min_all = INFINITY;
+  for (int i = 0; i < atom->nlocal; i++)
+    r_min = std::min(r_min, atom->radius[i]);
+  MPI_Allreduce(&r_min, &r_min_all, 1, MPI_DOUBLE, MPI_MIN, world);
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++) {
+      const std::string problem = setflag[i][j] ? lub::validate_grid_for_radius(coeffs[index(i, j)], r_min_all) : "";
+      if (!problem.empty()) error->all(FLERR, "{} types {} {}: {}", STYLE, i, j, problem);
+    }
 
   // Largest radius per type: atoms present now, and those fix pour/deposit may insert.
   std::vector<double> local(n + 1, 0.0);

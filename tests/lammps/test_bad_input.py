@@ -119,6 +119,11 @@ CASES = {
     "wall_viscosity_absurd": (script(fix="fix w all wall/lubrication 0.9 viscosity 1e300 grid 1e-4 "
                                          "zplane 0.0 NULL"),
                               ["Fix wall/lubrication", "viscosity = 1e+300 is out of range"]),
+    "grid_beyond_a_radius": (script("pair_coeff * * 0.9 viscosity 1e-3 grid 8e-3"),
+                             ["types 1 1: grid = 0.008 gives eps_al = 0.75 dx / R = 6", "(R = 0.001)",
+                              "allowed: 0.75 dx / R <= 1"]),
+    "wall_grid_beyond_a_radius": (script(fix="fix w all wall/lubrication 0.9 viscosity 1e-3 grid 8e-3 zplane 0.0 NULL"),
+                                  ["Fix wall/lubrication", "grid = 0.008 gives eps_al = 0.75 dx / R = 6"]),
     "wall_tcontact_too_many_steps": (script(fix="fix w all wall/lubrication 0.9 tcontact 100 zplane 0.0 NULL"),
                                      ["Fix wall/lubrication", "tcontact = 100 is out of range with the time "
                                       "step 1e-05", "1 <= N_c <= 1e6"]),
