@@ -16,7 +16,7 @@ WET_DT = 0.005    # in R/U
 
 
 def viscosity_for_stokes(st, radius=R, speed=U, rho=RHO):
-    """St = (2/9) rho_p R u / mu_f  (MODEL.md section 5)."""
+    """St = (2/9) rho_p R u / mu_f  (doc/model.rst, "Wet restitution and the Stokes number")."""
     return 2.0 / 9.0 * rho * radius * speed / st
 
 
