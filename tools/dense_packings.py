@@ -143,7 +143,7 @@ run 100
 next q
 jump SELF quench
 print "RESULT relaxed $(c_fmax:%.6g) $(pe:%.6g)"
-write_data packing.data
+write_data packing.data nocoeff
 """
 
 

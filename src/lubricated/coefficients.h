@@ -289,6 +289,31 @@ inline std::string validate_time_step(const Coefficients &c, double dt)
   return "";
 }
 
+// The coefficients as pair_coeff words (write_data's Pair Coeffs): parse_coefficients() of this
+// text gives them back exactly (%.17g). Keywords at their defaults are left out.
+inline std::string coefficients_words(const Coefficients &c)
+{
+  auto number = [](double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return std::string(text);
+  };
+  std::string words = number(c.e_dry);
+  words += c.t_contact > 0.0 ? " tcontact " + number(c.t_contact) : " ncontact " + number(c.n_contact);
+  if (c.wet()) {
+    words += " viscosity " + number(c.viscosity);
+    words += c.grid_spacing > 0.0 ? " grid " + number(c.grid_spacing) : " activation " + number(c.eps_activation);
+    words += " saturation " + number(c.eps_saturation) + " release " + number(c.eps_release);
+  }
+  if (!c.exact_contact) words += " integration sampled";
+  if (c.friction > 0.0) words += " friction " + number(c.friction);
+  if (c.e_tangential >= 0.0) words += " tangential " + number(c.e_tangential);
+  if (c.rolling_friction > 0.0) words += " rolling " + number(c.rolling_friction);
+  if (c.shearfilm >= 0) words += c.shearfilm == 1 ? " shearfilm yes" : " shearfilm no";
+  if (c.legendre > 0.0) words += " legendre " + number(c.legendre);
+  return words;
+}
+
 // Advice that is not an error: the paper finds N_c = 8 the smallest count that keeps e_d. A t_c
 // of exactly 8 steps computed in floating point (7.999999999999999) is 8.
 inline std::string time_step_warning(const Coefficients &c, double dt)

@@ -44,6 +44,7 @@ PairLubricatedSpringDashpot::PairLubricatedSpringDashpot(LAMMPS *lmp) : Pair(lmp
   svector = new double[single_extra];
   finitecutflag = 1;
   restartinfo = 1;
+  writedata = 1;
   // The film budget: scales forward, loads reverse (1 value per atom); the contact masses
   // forward (1); the contact-network check: its sums both ways (lub::network_values).
   comm_forward = comm_reverse = lub::network_values;
@@ -487,4 +488,19 @@ double PairLubricatedSpringDashpot::memory_usage()
          (step_reach.capacity() + inverse_mass.capacity() + load_of_atom.capacity() + scale_of_atom.capacity() +
           record_force.capacity() + record_shear.capacity()) *
              sizeof(double);
+}
+
+// write_data: the pair_coeff words of each type pair (Pair Coeffs: i i; PairIJ Coeffs: i <= j),
+// which read_data gives back to coeff() (lubricated::coefficients_words).
+void PairLubricatedSpringDashpot::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    fprintf(fp, "%d %s\n", i, lub::coefficients_words(coeffs[index(i, i)]).c_str());
+}
+
+void PairLubricatedSpringDashpot::write_data_all(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      fprintf(fp, "%d %d %s\n", i, j, lub::coefficients_words(coeffs[index(i, j)]).c_str());
 }

@@ -35,6 +35,8 @@ class PairLubricatedSpringDashpot : public Pair {
   void reset_dt() override;
   void write_restart(FILE *) override;
   void read_restart(FILE *) override;
+  void write_data(FILE *) override;
+  void write_data_all(FILE *) override;
   double single(int, int, int, int, double, double, double, double &) override;
   double memory_usage() override;
   int pack_forward_comm(int, int *, double *, int, int *) override;

@@ -235,3 +235,26 @@ TEST(Coefficients, CheckSetupReportsWhatEveryAdapterPrints)
   ASSERT_EQ(calibrated.warnings.size(), 1u);
   EXPECT_NE(calibrated.warnings[0].find("legendre 35 cannot act"), std::string::npos);
 }
+
+// coefficients_words (write_data's Pair Coeffs): parsed back, every coefficient is the same.
+TEST(Coefficients, WordsParseBackExactly)
+{
+  const char *lines[] = {"0.9",
+                         "0.5 ncontact 12",
+                         "0.123456789 tcontact 3.3e-5 viscosity 0.0035555555555555557 activation 0.1",
+                         "0.9 ncontact 8 viscosity 1e-3 grid 1.25e-4 saturation 2e-3 release -0.005",
+                         "0.7 integration sampled friction 0.3 tangential 0.4 rolling 0.01 shearfilm no",
+                         "0.9 viscosity 1e-3 activation 0.1 friction 0.2 shearfilm yes",
+                         "0.9 viscosity 1e-3 activation 0.1 legendre 35"};
+  for (const char *line : lines) {
+    Coefficients c, back;
+    ASSERT_EQ(parse(line, c), "") << line;
+    const std::string words = coefficients_words(c);
+    ASSERT_EQ(parse(words, back), "") << words;
+    double a[Coefficients::packed_size], b[Coefficients::packed_size];
+    c.pack(a);
+    back.pack(b);
+    for (int k = 0; k < Coefficients::packed_size; k++)
+      EXPECT_EQ(a[k], b[k]) << line << " -> " << words << " (value " << k << ")";
+  }
+}

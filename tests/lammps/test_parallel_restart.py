@@ -172,3 +172,26 @@ def thermo_rows(log):
     """The numeric rows of the thermo output (step ke pe press)."""
     rows = [line.split() for line in log.splitlines()]
     return [[float(v) for v in r] for r in rows if len(r) == 4 and r[0].isdigit()]
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_data_file_keeps_the_pair_coefficients(lmp, nprocs):
+    """`write_data ... pair ij` writes every type pair's pair_coeff words, read_data gives them
+    back to the pair style (no pair_coeff after it): the run continues as the split run in one
+    process does (before: no coefficients were written, and read_data left the style unset)."""
+    reference = lmp(chain(steps=300, extra_run="write_data mid.data pair ij\nrun 300") + dump_state(),
+                    nprocs=nprocs)
+    data = (lmp.dir / "mid.data").read_text()
+    assert "PairIJ Coeffs" in data and "1 1 0.80000000000000004 ncontact 8 viscosity" in data
+    mu = 2.0 / 9.0 * 8000 * 1e-3 * 0.1 / 100
+    continued = lmp(scenes.HEADER.replace("${newton}", "on").replace("boundary p p f", "boundary f p p") + f"""
+pair_style lubricated/springdashpot
+read_data mid.data
+fix walls all wall/lubrication 0.7 viscosity {mu} grid 1.25e-4 xplane -0.008 0.008
+fix nve all nve/sphere
+timestep {0.005 * 1e-3 / 0.1}
+neighbor {0.3e-3} bin
+run 300
+""" + dump_state(), nprocs=nprocs, name="in.data")
+    assert "pair_coeff" not in (lmp.dir / "in.data").read_text()
+    assert_same_state(reference, continued)
