@@ -11,6 +11,8 @@
 #include "modify.h"
 #include "utils.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <dlfcn.h>
 #include <iterator>
@@ -142,4 +144,20 @@ void ContactMass::fill(double *inverse)
     for (int i = 0; i < nlocal; i++)
       if ((mask[i] & fix->groupbit) && !held(mask[i]) && body[i] >= 0) inverse[i] = 1.0 / mass[body[i]];
   }
+}
+
+double LAMMPS_NS::smallest_sphere_radius(LAMMPS *lmp, const char *style, int groupbit)
+{
+  Atom *atom = lmp->atom;
+  double smallest = INFINITY;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    if (!(atom->radius[i] > 0.0))
+      lmp->error->one(FLERR, "{}: atom {} has diameter {} (allowed: > 0; a point particle has no contact or film)",
+                      style, atom->tag[i], 2.0 * atom->radius[i]);
+    smallest = std::min(smallest, atom->radius[i]);
+  }
+  double smallest_all = INFINITY;
+  MPI_Allreduce(&smallest, &smallest_all, 1, MPI_DOUBLE, MPI_MIN, lmp->world);
+  return smallest_all;
 }

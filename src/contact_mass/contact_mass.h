@@ -46,6 +46,11 @@ class ContactMass : protected Pointers {
   bool held(int mask) const { return (mask & held_bits) || (any_integrator && !(mask & integrated_bits)); }
 };
 
+// The smallest radius of the atoms of a group over all ranks, at a run's set-up, after refusing
+// a point particle (diameter 0: no contact surface and no film, R = 0 in 1/eps) with an ERROR
+// naming the atom (style: the command's name for the message).
+double smallest_sphere_radius(LAMMPS *lmp, const char *style, int groupbit);
+
 }    // namespace LAMMPS_NS
 
 #endif

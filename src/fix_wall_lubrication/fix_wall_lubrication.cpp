@@ -123,18 +123,9 @@ void FixWallLubrication::init()
     midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
   pair = dynamic_cast<PairLubricatedSpringDashpot *>(force->pair_match("lubricated/springdashpot", 1));
   contact_mass.init(STYLE, !pair);    // the pair style logs them where there is one
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((atom->mask[i] & groupbit) && !(atom->radius[i] > 0.0))
-      error->one(FLERR,
-                 "{}: atom {} has diameter {} (allowed: > 0; a point particle has no contact "
-                 "or film)",
-                 STYLE, atom->tag[i], 2.0 * atom->radius[i]);
-  // With a grid spacing the smallest spheres have the largest eps_al (at most 1, as activation).
-  double r_min = INFINITY, r_min_all = INFINITY;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) r_min = std::min(r_min, atom->radius[i]);
-  MPI_Allreduce(&r_min, &r_min_all, 1, MPI_DOUBLE, MPI_MIN, world);
-  const std::string problem = lub::validate_grid_for_radius(coeffs, r_min_all);
+  // Point particles are refused; with a grid spacing the smallest spheres have the largest
+  // eps_al (at most 1, as activation).
+  const std::string problem = lub::validate_grid_for_radius(coeffs, smallest_sphere_radius(lmp, STYLE, groupbit));
   if (!problem.empty()) error->all(FLERR, "{}: {}", STYLE, problem);
   films_pending = false;
 }

@@ -157,11 +157,7 @@ void FixLubricatedFilmBudget::decide_skip()
   for (const WallFilms &wall : walls_)
     for (int i = 0; i < nlocal; i++)
       bound[i] += wall.mesh ? 1.0 : film_share_bound(wall.by_type[type[i]], radius[i], rmass[i], dt);
-  // A margin for the rounding of the film's integral (film_budget.h, ~1e-12 relative).
-  constexpr double below_one = 1.0 - 1e-6;
-  int over = 0;
-  for (int i = 0; i < nlocal; i++)
-    over |= bound[i] > below_one;
+  const int over = any_load_can_exceed_budget(bound, nlocal) ? 1 : 0;
   int any_over = 0;
   MPI_Allreduce(&over, &any_over, 1, MPI_INT, MPI_MAX, world);
   films_can_exceed_ = any_over != 0;

@@ -171,9 +171,9 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   }
 
  private:
-  // The mass a contact moves, as LIGGGHTS computes sidata.meff for overlapping pairs (which it
-  // does not for surfacesClose): a rigid body's mass for its atoms, the partner's mass alone
-  // against an atom of fix freeze's group. A wall's meff is set before either call.
+  // The mass a contact moves, in overlap and near it (LIGGGHTS gives sidata.meff in overlap only):
+  // a rigid body's mass for its atoms, the partner's mass alone against an atom no contact moves
+  // (immovable()). A wall's meff is set before either call.
   double reduced_mass(const SurfacesCloseData &scdata) const
   {
     if (is_wall_) return static_cast<const SurfacesIntersectData &>(scdata).meff;
@@ -182,12 +182,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
 
   double pair_reduced_mass(int i, int j) const
   {
-    double m_i = atom->rmass[i], m_j = atom->rmass[j];
-    if (pair_->fr_pair()) {
-      const double *body_mass = pair_->mr_pair();
-      if (body_mass[i] > 0.0) m_i = body_mass[i];
-      if (body_mass[j] > 0.0) m_j = body_mass[j];
-    }
+    double m_i, m_j;
+    atom_masses(i, j, m_i, m_j);
     const bool held_i = immovable(i), held_j = immovable(j);
     if (held_j && !held_i) return m_i;
     if (held_i && !held_j) return m_j;
@@ -197,11 +193,9 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     return lubricated::reduced_mass(m_i, m_j);
   }
 
-  // The masses of a pair's atoms as the contact moves them: a rigid body's, infinite in fix
-  // freeze's group (the network check's sums; contact_network.h).
-  void contact_masses(const SurfacesCloseData &scdata, double &m_i, double &m_j) const
+  // The spheres' masses, a rigid body's for its atoms (as LIGGGHTS's sidata.meff).
+  void atom_masses(int i, int j, double &m_i, double &m_j) const
   {
-    const int i = scdata.i, j = scdata.j;
     m_i = atom->rmass[i];
     m_j = atom->rmass[j];
     if (pair_->fr_pair()) {
@@ -209,8 +203,15 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
       if (body_mass[i] > 0.0) m_i = body_mass[i];
       if (body_mass[j] > 0.0) m_j = body_mass[j];
     }
-    if (immovable(i)) m_i = INFINITY;
-    if (immovable(j)) m_j = INFINITY;
+  }
+
+  // The masses of a pair's atoms as the contact moves them: infinite for an atom no contact
+  // moves (the network check's sums; contact_network.h).
+  void contact_masses(const SurfacesCloseData &scdata, double &m_i, double &m_j) const
+  {
+    atom_masses(scdata.i, scdata.j, m_i, m_j);
+    if (immovable(scdata.i)) m_i = INFINITY;
+    if (immovable(scdata.j)) m_j = INFINITY;
   }
 
   // Atoms no contact moves: left out of every time integration, or in the group of fix freeze,

@@ -113,6 +113,18 @@ inline double film_share_bound(const Lubrication &film, double film_radius, doub
   return std::min(1.0, film.six_pi_mu * film_radius * slope * dt / reduced_mass);
 }
 
+// Whether any atom's bound on its load (the sum of its contacts' film_share_bound) can exceed 1,
+// with a margin for the rounding of the film's integral (~1e-12 relative): where none can, the
+// budget has nothing to do until the bounds change.
+inline bool any_load_can_exceed_budget(const double *bound, int n)
+{
+  constexpr double below_one = 1.0 - 1e-6;
+  bool over = false;
+  for (int i = 0; i < n; i++)
+    over |= bound[i] > below_one;
+  return over;
+}
+
 // The shear film's share a_t = |F| t_kick / (m_t |s|) from the squared lengths of its force and
 // the slip (F = -c_t s: parallel), m_t the tangential mass (tangential_mass_ratio m_e).
 inline double shear_film_share(double force_sq, double slip_sq, double tangential_mass, double kick_time)

@@ -244,19 +244,9 @@ void PairLubricatedSpringDashpot::init_style()
   // so a wet model asks for a list with per-type cutoffs that cover the whole film.
   neighbor->add_request(this, any_wet ? NeighConst::REQ_DEFAULT : NeighConst::REQ_SIZE);
 
-  // A point particle (diameter 0) has no contact surface and no film (R = 0 in 1/eps):
-  // refused at each run setup rather than evaluated as NaN.
-  for (int i = 0; i < atom->nlocal; i++)
-    if (!(atom->radius[i] > 0.0))
-      error->one(FLERR,
-                 "{}: atom {} has diameter {} (allowed: > 0; a point particle has no contact "
-                 "or film)",
-                 STYLE, atom->tag[i], 2.0 * atom->radius[i]);
-  // With a grid spacing the smallest spheres have the largest eps_al (at most 1, as activation).
-  double r_min = INFINITY, r_min_all = INFINITY;
-  for (int i = 0; i < atom->nlocal; i++)
-    r_min = std::min(r_min, atom->radius[i]);
-  MPI_Allreduce(&r_min, &r_min_all, 1, MPI_DOUBLE, MPI_MIN, world);
+  // Point particles are refused; with a grid spacing the smallest spheres have the largest
+  // eps_al (at most 1, as activation).
+  const double r_min_all = smallest_sphere_radius(lmp, STYLE, ~0);
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++) {
       const std::string problem = setflag[i][j] ? lub::validate_grid_for_radius(coeffs[index(i, j)], r_min_all) : "";

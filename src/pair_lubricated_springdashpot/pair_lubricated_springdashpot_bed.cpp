@@ -80,11 +80,7 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
     comm_what = COMM_LOAD;
     comm->reverse_comm(this);
   }
-  // A margin for the rounding of the film's integral (film_budget.h, ~1e-12 relative).
-  constexpr double below_one = 1.0 - 1e-6;
-  int over = 0;
-  for (int i = 0; i < nlocal; i++)
-    over |= bound[i] > below_one;
+  const int over = lub::any_load_can_exceed_budget(bound, nlocal) ? 1 : 0;
   int any_over = 0;
   MPI_Allreduce(&over, &any_over, 1, MPI_INT, MPI_MAX, world);
   return any_over != 0;
