@@ -287,3 +287,34 @@ def test_likely_unstable_network_is_warned_once_a_run(run):
     assert len(warnings) == 2
     assert "lubricatedContactSteps = 2" in warnings[0] and "use lubricatedContactSteps >=" in warnings[0]
     assert result["top"] > 25.0
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_interrupted_dense_bed_never_gains(run, nprocs):
+    """The fcc bed at 1 Pa s, 1e-6 s (a film-dominated case) run as six runs with `run 0` between
+    them, then written to a restart file and continued by a new LIGGGHTS process (the budget
+    fix holds nothing between steps; the pair style comes back from the file, the properties
+    are given again): ke + erot never rises between any two samples, boundaries included, and
+    no atom is lost; `lubricatedLimitPair 1` gains more than 1e3 E0 on the same runs."""
+    def split(limit):
+        script = dense.fcc(1.0, 1e-6, steps=50, limit=limit, newton="on")
+        body, tail = script.split("run 50\n")
+        runs = "".join("run 50\nrun 0\n" for _ in range(6))
+        return body + runs + "write_restart mid.restart\n", tail
+    first, _ = split("atom")
+    model = first[first.index("fix m1"):first.index("pair_style")]
+    after = first[first.index("neighbor"):first.index("run 50")]
+    second = (dense.HEADERS["liggghts"] + "newton on\nread_restart mid.restart\n" + model + after +
+              "run 150\n")
+    run.lig(first, nprocs=nprocs)
+    rows = dense.rows(run.log)
+    run.lig(second, nprocs=nprocs, name="in.restart")
+    rows += dense.rows(run.log)
+    e0 = rows[0][MOTION]
+    assert {r[ATOMS] for r in rows} == {256}
+    assert all(r[CONTACTS] == 0 for r in rows)
+    rises = [(b[MOTION] - a[MOTION]) / e0 for a, b in zip(rows, rows[1:])]
+    assert max(rises) <= ROUND_OFF and rows[-1][MOTION] < 1e-6 * e0
+    pair, _ = split("pair")
+    run.lig(pair, nprocs=nprocs, name="in.pair")
+    assert max(r[MOTION] for r in dense.rows(run.log)) > 1e3 * e0
