@@ -133,25 +133,24 @@ void FixWallLubrication::init()
 // k = m (pi^2 + ln^2 e_d) / (N_c dt)^2 follows the time step when N_c is given.
 void FixWallLubrication::reset_dt()
 {
-  model = lub::make_normal_model(coeffs, lub::Partner::wall, update->dt);
-  tmodel = lub::make_tangential_model(coeffs, update->dt);
+  model = lub::make_contact_model(coeffs, lub::Partner::wall, update->dt);
 }
 
 // A wet wall is computed before the pair style, its films applied after it (within the
 // budget); a dry wall has no film and is computed after the pair style as it always was.
 void FixWallLubrication::setup_pre_force(int /*vflag*/)
 {
-  if (update->whichflag == 1 && model.lubrication.active()) compute_walls(true);
+  if (update->whichflag == 1 && model.normal.lubrication.active()) compute_walls(true);
 }
 
 void FixWallLubrication::pre_force(int /*vflag*/)
 {
-  if (model.lubrication.active()) compute_walls(true);
+  if (model.normal.lubrication.active()) compute_walls(true);
 }
 
 void FixWallLubrication::setup(int /*vflag*/)
 {
-  if (model.lubrication.active())
+  if (model.normal.lubrication.active())
     apply_films();
   else
     compute_walls(false);
@@ -159,7 +158,7 @@ void FixWallLubrication::setup(int /*vflag*/)
 
 void FixWallLubrication::post_force(int /*vflag*/)
 {
-  if (model.lubrication.active())
+  if (model.normal.lubrication.active())
     apply_films();
   else
     compute_walls(false);
@@ -187,15 +186,15 @@ void FixWallLubrication::add_film_loads(double *load, int nlocal) const
 // (m_e = m) and the test runs once per neighbor list build.
 void FixWallLubrication::add_film_share_bounds(double *bound, int nlocal) const
 {
-  if (!model.lubrication.active()) return;
+  if (!model.normal.lubrication.active()) return;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int sides = (has_lo ? 1 : 0) + (has_hi ? 1 : 0);
-  const bool shear_film = tmodel.film_active();    // no bound on its share yet: 1
+  const bool shear_film = model.tangential.film_active();    // no bound on its share yet: 1
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
       bound[i] +=
-          sides * (shear_film ? 1.0 : lub::film_share_bound(model.lubrication, radius[i], rmass[i], update->dt));
+          sides * (shear_film ? 1.0 : lub::film_share_bound(model.normal.lubrication, radius[i], rmass[i], update->dt));
 }
 
 // The deferred wall films, scaled by the atoms' film budget: the pair style's where it keeps
@@ -235,16 +234,17 @@ void FixWallLubrication::compute_walls(bool defer_films)
   double **f = atom->f;
   const double *radius = atom->radius;
   const double *rmass = atom->rmass;
+  double **omega = atom->omega, **torque = atom->torque;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
   const lub::Evaluation when = lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
-  const bool tangential_on = tmodel.active();
+  const bool tangential_on = model.tangential.active();
 
   for (double &s : local_sums)
     s = 0.0;
   sums_reduced = false;
-  films_pending = defer_films = defer_films && model.lubrication.active();
-  shear_pending = defer_films && tmodel.film_active();
+  films_pending = defer_films = defer_films && model.normal.lubrication.active();
+  shear_pending = defer_films && model.tangential.film_active();
   if (defer_films) {
     film_force.assign(nlocal, 0.0);
     film_load.assign(nlocal, 0.0);
@@ -252,50 +252,67 @@ void FixWallLubrication::compute_walls(bool defer_films)
   if (shear_pending) shear_film.assign(6 * static_cast<std::size_t>(nlocal), 0.0);
   const double kick_time =
       lub::film_kick_time(update->dt, when != lub::Evaluation::step, when == lub::Evaluation::midpoint_start);
+  // Atom i (contact mass `mass`) at the wall of this side (+1: lo wall, normal along +axis; -1:
+  // hi wall, normal along -axis), where the contact acts. Out of line: most atoms are far from
+  // the walls, and their loop stays short.
+  auto wall_contact = [&](int i, int side, double gap, double u_n, double mass, double *h) __attribute__((noinline))
+  {
+    const double r = radius[i];
+    lub::ContactPoint p;
+    p.gap = gap, p.u_n = u_n, p.reduced_mass = mass, p.film = lub::FilmRadius(r);
+    lub::HistorySlot slot;
+    if (tangential_on) {
+      (axis == 0 ? p.n.x : axis == 1 ? p.n.y : p.n.z) = side;
+      p.dv = {v[i][0], v[i][1], v[i][2]};
+      p.omega_i = {omega[i][0], omega[i][1], omega[i][2]};
+      p.radius_i = r, p.reduced_radius = r;
+      p.mass_i = rmass[i];    // the sphere's own inertia, also in a rigid body
+      if (h) slot = {h, h[3] != 0.0};
+    }
+    const lub::ContactForces c =
+        tangential_on ? lub::contact_forces<true, lub::Partner::wall>(model, p, slot, when, shear_pending)
+                      : lub::contact_forces<false, lub::Partner::wall>(model, p, slot, when);
+    const lub::NormalForce &fn = c.normal;
+    if (h) h[3] = slot.touched;
+    double force = side * fn.total();
+    double share = 0.0;
+    if (defer_films) {    // applied in post_force, within the atom's film budget
+      force = side * fn.contact;
+      film_force[i] += side * fn.lubrication;
+      share = lub::film_share(fn.lubrication, mass, u_n, kick_time);
+      if (!shear_pending) film_load[i] += share;
+    }
+    f[i][axis] += force;
+    local_sums[0] += fn.energy;
+    local_sums[1 + axis] += force;
+    if (!tangential_on) return;
+    // The shear film deferred with the normal one (its force and torque); the contact's share
+    // the larger of the two films' (film_budget.h).
+    if (shear_pending) {
+      film_load[i] += lub::contact_film_share(share, c.shear_share(kick_time));
+      double *out = &shear_film[6 * i];
+      out[0] += c.shear.x, out[1] += c.shear.y, out[2] += c.shear.z;
+      out[3] += c.shear_torque_i.x, out[4] += c.shear_torque_i.y, out[5] += c.shear_torque_i.z;
+    }
+    f[i][0] += c.tangential.x, f[i][1] += c.tangential.y, f[i][2] += c.tangential.z;
+    torque[i][0] += c.torque_i.x, torque[i][1] += c.torque_i.y, torque[i][2] += c.torque_i.z;
+    local_sums[1] += c.tangential.x, local_sums[2] += c.tangential.y, local_sums[3] += c.tangential.z;
+  };
   // Both walls on atom i of contact mass `mass`.
   auto walls_of_atom = [&](int i, double mass) __attribute__((always_inline))
   {
     const double r = radius[i];
-    // side = +1: lo wall, normal along +axis; side = -1: hi wall, normal along -axis.
     for (int side = 1; side >= -1; side -= 2) {
       if (side == 1 ? !has_lo : !has_hi) continue;
       const double gap = side * (x[i][axis] - (side == 1 ? lo : hi)) - r;
-      const double u_n = side * (midpoint && model.exact ? midpoint->step_velocity(i)[axis] : v[i][axis]);
-      if (!model.acts(gap, r, u_n)) {
-        if (history && history[i][(side == 1 ? 0 : HISTORY_PER_WALL) + 3] != 0.0)
-          for (int k = 0; k < HISTORY_PER_WALL; k++)
-            history[i][(side == 1 ? 0 : HISTORY_PER_WALL) + k] = 0.0;
-        continue;
-      }
-      const lub::NormalForce fn = lub::normal_force(model, gap, r, mass, u_n, when);
-      double force = side * fn.total();
-      double share = 0.0;
-      if (defer_films) {    // applied in post_force, within the atom's film budget
-        force = side * fn.contact;
-        film_force[i] += side * fn.lubrication;
-        share = lub::film_share(fn.lubrication, mass, u_n, kick_time);
-        if (!shear_pending) film_load[i] += share;
-      }
-      f[i][axis] += force;
-      local_sums[0] += fn.energy;
-      local_sums[1 + axis] += force;
-      if (tangential_on) {
-        double ft[3] = {0.0, 0.0, 0.0}, torque[3] = {0.0, 0.0, 0.0};
-        // The shear film deferred with the normal one: its force and torque (shear, 6) and
-        // share (shear[6]); the contact's share the larger of the two (film_budget.h).
-        double shear[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-        tangential(i, side, gap, u_n, fn.contact, mass, ft, torque, kick_time, shear_pending ? shear : nullptr);
-        if (shear_pending) {
-          film_load[i] += lub::contact_film_share(share, shear[6]);
-          for (int d = 0; d < 6; d++)
-            shear_film[6 * i + d] += shear[d];
-        }
-        for (int d = 0; d < 3; d++) {
-          f[i][d] += ft[d];
-          atom->torque[i][d] += torque[d];
-          local_sums[1 + d] += ft[d];
-        }
-      }
+      const double u_n = side * (midpoint && model.normal.exact ? midpoint->step_velocity(i)[axis] : v[i][axis]);
+      // This wall's friction history of the atom (elongation x y z, touched); out of reach, forgotten.
+      double *h = history ? history[i] + (side == 1 ? 0 : HISTORY_PER_WALL) : nullptr;
+      if (model.normal.acts(gap, r, u_n))
+        wall_contact(i, side, gap, u_n, mass, h);
+      else if (h && h[3] != 0.0)
+        for (int k = 0; k < HISTORY_PER_WALL; k++)
+          h[k] = 0.0;
     }
   };
 
@@ -312,54 +329,6 @@ void FixWallLubrication::compute_walls(bool defer_films)
   }
   for (int i = 0; i < nlocal; i++)
     if ((mask[i] & groupbit) && inverse_mass[i] > 0.0) walls_of_atom(i, 1.0 / inverse_mass[i]);
-}
-
-// Tangential force and torque on i from the wall on this side (tangential.h, m_e = mass; the
-// rolling resistance with the sphere's own inertia). shear (7 doubles, or nullptr): the shear
-// film is left out of force and torque and returned there instead (force, torque, and its share
-// of the film budget for this kick time, film_budget.h).
-void FixWallLubrication::tangential(int i, int side, double gap, double u_n, double normal_force, double mass,
-                                    double *force, double *torque, double kick_time, double *shear)
-{
-  const double r = atom->radius[i], m = atom->rmass[i];
-  const double *v = atom->v[i], *w = atom->omega[i];
-  lub::Vec3 n;
-  (axis == 0 ? n.x : axis == 1 ? n.y : n.z) = side;
-  const lub::Vec3 omega{w[0], w[1], w[2]};
-  const lub::Vec3 s =
-      lub::tangential_part(lub::minus(lub::Vec3{v[0], v[1], v[2]}, lub::cross(lub::scaled(omega, r), n)), n);
-  const double m_t = lub::tangential_mass_ratio * mass;
-
-  lub::Vec3 f;
-  if (history) {
-    double *h = history[i] + (side == 1 ? 0 : HISTORY_PER_WALL);
-    if (tmodel.contact_active() && lub::tangential_in_contact(gap)) {
-      const double fraction = h[3] != 0.0 ? 1.0 : lub::first_contact_fraction(gap, u_n, tmodel.dt);
-      lub::Vec3 delta{h[0], h[1], h[2]};
-      f = lub::tangential_contact_force(tmodel, delta, n, s, m_t, normal_force, fraction);
-      h[0] = delta.x, h[1] = delta.y, h[2] = delta.z, h[3] = 1.0;
-    } else if (h[3] != 0.0) {
-      h[0] = h[1] = h[2] = h[3] = 0.0;
-    }
-  }
-  if (tmodel.film_active()) {
-    const lub::Vec3 fs = lub::shear_film_force(tmodel, s, gap / r, model.lubrication.activation_for(r),
-                                               model.lubrication.eps_saturation, model.lubrication.eps_release, r, m_t);
-    if (shear) {
-      const lub::Vec3 nxfs = lub::cross(n, fs);
-      shear[0] = fs.x, shear[1] = fs.y, shear[2] = fs.z;
-      shear[3] = -r * nxfs.x, shear[4] = -r * nxfs.y, shear[5] = -r * nxfs.z;
-      shear[6] = lub::shear_film_share(lub::dot(fs, fs), lub::dot(s, s), m_t, kick_time);
-    } else {
-      f = lub::plus(f, fs);
-    }
-  }
-  lub::Vec3 roll;
-  if (tmodel.rolling_active() && gap < 0.0)
-    roll = lub::rolling_torque(tmodel, n, omega, r, 0.4 * m * r * r, normal_force);
-  const lub::Vec3 nxf = lub::cross(n, f);
-  force[0] = f.x, force[1] = f.y, force[2] = f.z;
-  torque[0] = -r * nxf.x + roll.x, torque[1] = -r * nxf.y + roll.y, torque[2] = -r * nxf.z + roll.z;
 }
 
 void FixWallLubrication::grow_arrays(int nmax)

@@ -10,8 +10,7 @@
 #include "fix.h"
 
 #include "contact_mass/contact_mass.h"
-#include "lubricated/normal_model.h"
-#include "lubricated/tangential.h"
+#include "lubricated/contact.h"
 
 #include <vector>
 
@@ -55,14 +54,11 @@ class FixWallLubrication : public Fix {
 
  protected:
   lubricated::Coefficients coeffs;
-  lubricated::NormalModel model;
-  lubricated::TangentialModel tmodel;
+  lubricated::ContactModel model;    // derived from coeffs and dt
   // Per atom and wall side (lo, hi): elongation x y z and a touched flag.
   static constexpr int HISTORY_PER_WALL = 4, HISTORY_SIZE = 2 * HISTORY_PER_WALL;
   double **history = nullptr;
   bool keeps_history() const { return coeffs.friction > 0.0; }
-  void tangential(int i, int side, double gap, double u_n, double normal_force, double mass, double *force,
-                  double *torque, double kick_time = 0.0, double *shear = nullptr);
   int axis = -1;    // 0, 1, 2 for xplane, yplane, zplane
   bool has_lo = false, has_hi = false;
   double lo = 0.0, hi = 0.0;                      // wall positions (box units)

@@ -41,6 +41,7 @@ NORMAL_MODEL(LUBRICATED, lubricated, 42)
 #include "lubricated/contact_network.h"
 #include "lubricated/film_budget.h"
 #include "lubricated/normal_model.h"
+#include "lubricated/tangential.h"
 
 #include <algorithm>
 #include <cmath>
@@ -119,7 +120,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     const lubricated::NormalModel &model = models_[t];
     const double gap = -sidata.deltan, u_n = sidata.vn;
     const double m_e = is_wall_ ? sidata.meff : pair_reduced_mass(sidata.i, sidata.j);
-    const double radius = is_wall_ ? sidata.radi : lubricated::lubrication_radius_pair(sidata.radi, sidata.radj);
+    const double radius = is_wall_ ? sidata.radi : lubricated::film_radius_pair(sidata.radi, sidata.radj).value;
     if (!update->setupflag && gap - u_n * dt_ >= (neighbor->contactDistanceFactor - 1.0) * sidata.radsum)
       missed_approach(u_n);    // entered from beyond the close range: no step before was seen
     const lubricated::NormalForce fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation());
@@ -131,8 +132,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     sidata.Fn = fn.contact;
     sidata.kn = m_e * model.contact.stiffness_per_mass;
     sidata.gamman = m_e * model.contact.damping_per_mass;
-    sidata.kt = 2.0 / 7.0 * sidata.kn;
-    sidata.gammat = 2.0 / 7.0 * sidata.gamman;
+    sidata.kt = lubricated::tangential_mass_ratio * sidata.kn;
+    sidata.gammat = lubricated::tangential_mass_ratio * sidata.gamman;
 
     apply(fn.total() * (is_wall_ ? sidata.area_ratio : 1.0), sidata.en, i_forces, j_forces);
     if (fn.lubrication != 0.0 && budget_on_ && budget_->active())
@@ -158,7 +159,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     const double gap = r - scdata.radsum;
     const double *vi = scdata.v_i, *vj = scdata.v_j;
     const double u_n = (vi[0] - vj[0]) * en[0] + (vi[1] - vj[1]) * en[1] + (vi[2] - vj[2]) * en[2];
-    const double radius = is_wall_ ? scdata.radi : lubricated::lubrication_radius_pair(scdata.radi, scdata.radj);
+    const double radius = is_wall_ ? scdata.radi : lubricated::film_radius_pair(scdata.radi, scdata.radj).value;
     if (!model.acts(gap, radius, u_n)) return;
     const double m_e = reduced_mass(scdata);
     const lubricated::NormalForce fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation());
@@ -317,7 +318,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
         const lubricated::Lubrication &film = models_[type[i] * (ntypes_ + 1) + type[j]].lubrication;
         if (!film.active()) continue;
         const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
-        const double film_radius = lubricated::lubrication_radius_pair(radius[i], radius[j]);
+        const double film_radius = lubricated::film_radius_pair(radius[i], radius[j]).value;
         const double reach = radius[i] + radius[j] + film.reach(film_radius) + skin;
         if (dx * dx + dy * dy + dz * dz >= reach * reach) continue;
         const double b = lubricated::film_share_bound(film, film_radius, pair_reduced_mass(i, j), dt_);

@@ -39,15 +39,47 @@ struct ContactStep {
   double exit_guess[table_size + 1];     // exit time s against x = r / (1 + r), r = g1 / -g0
   double entry_guess[table_size + 1];    // entry time s against x = r / (1 + r), r = -g1 / g0
   double dt = 0.0;
-  double inv_dt = 0.0;        // 1 / dt (engines multiply: no division per pair)
-  double decay_rate = 0.0;    // a      [1/time]
-  double omega = 0.0;         // omega  [1/time]
+  double inv_dt = 0.0;          // 1 / dt (engines multiply: no division per pair)
+  double contact_time = 0.0;    // t_c as integrated (at least min_steps_per_contact steps)
+  double decay_rate = 0.0;      // a      [1/time]
+  double omega = 0.0;           // omega  [1/time]
   double E = 1.0, C = 1.0, S = 0.0;
   double stiffness_step = 0.0;    // k' / m_e  [1/time^2]
   double damping_step = 0.0;      // c' / m_e  [1/time]
 };
 
 constexpr double min_steps_per_contact = 1.5;
+
+// The contact duration a step of dt can integrate (see above).
+inline double resolved_contact_time(double t_c, double dt)
+{
+  return std::max(t_c, min_steps_per_contact * dt);
+}
+
+// Per-step constants of a damped oscillator that completes half a period in t_c and keeps the
+// factor e of its speed over it (e = 0: fully damped, E = 0): E = exp(-a dt), C = cos(omega dt),
+// S = sin(omega dt), a = -ln(e) / t_c, omega = pi / t_c, and the spring-dashpot per unit mass
+// that lands a leapfrog step on it, k' = (1 + E^2 - 2 E C) / dt^2, c' = (1 - E^2) / dt. The
+// normal contact (e_d) and the tangential spring (e_t, tangential.h) share them.
+struct OscillatorStep {
+  double decay_rate = 0.0, omega = 0.0, E = 0.0, C = 1.0, S = 0.0;
+  double stiffness_step = 0.0, damping_step = 0.0;
+};
+
+inline OscillatorStep oscillator_step(double restitution, double t_c, double dt)
+{
+  OscillatorStep o;
+  o.omega = pi / t_c;
+  if (restitution > 0.0) {
+    o.decay_rate = -std::log(restitution) / t_c;
+    o.E = std::exp(-o.decay_rate * dt);
+  }
+  o.C = std::cos(o.omega * dt);
+  o.S = std::sin(o.omega * dt);
+  o.stiffness_step = (1.0 + o.E * o.E - 2.0 * o.E * o.C) / (dt * dt);
+  o.damping_step = (1.0 - o.E * o.E) / dt;
+  return o;
+}
 
 // Gap a step ahead of g1 (g0 a step before it) by the exact two-step recurrence of the damped
 // oscillator, valid while the pair stays in overlap.
@@ -145,14 +177,13 @@ inline ContactStep make_contact_step(const SpringDashpot &sd, double dt)
   cs.dt = dt;
   cs.inv_dt = 1.0 / dt;
   // Same e_d = exp(-a t_c) with t_c = pi / omega, at no less than 1.5 steps per contact.
-  const double t_c = std::max(contact_duration_of(sd), min_steps_per_contact * dt);
-  cs.omega = pi / t_c;
-  cs.decay_rate = -std::log(restitution_of(sd)) / t_c;
-  cs.E = std::exp(-cs.decay_rate * dt);
-  cs.C = std::cos(cs.omega * dt);
-  cs.S = std::sin(cs.omega * dt);
-  cs.stiffness_step = (1.0 + cs.E * cs.E - 2.0 * cs.E * cs.C) / (dt * dt);
-  cs.damping_step = (1.0 - cs.E * cs.E) / dt;
+  cs.contact_time = resolved_contact_time(contact_duration_of(sd), dt);
+  const OscillatorStep o = oscillator_step(restitution_of(sd), cs.contact_time, dt);
+  cs.omega = o.omega;
+  cs.decay_rate = o.decay_rate;
+  cs.E = o.E, cs.C = o.C, cs.S = o.S;
+  cs.stiffness_step = o.stiffness_step;
+  cs.damping_step = o.damping_step;
   // Tabulate the exit and entry times (bisection: once per type pair and time step).
   const double a = cs.decay_rate, w = cs.omega;
   for (int k = 0; k <= ContactStep::table_size; ++k) {

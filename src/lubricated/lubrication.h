@@ -206,13 +206,9 @@ inline Lubrication make_lubrication(Partner partner, double mu_f, double eps_act
   return lub;
 }
 
-// Radius that enters the film force (see the convention above).
-inline double lubrication_radius_pair(double radius_i, double radius_j)
-{
-  return 2.0 * radius_i * radius_j / (radius_i + radius_j);
-}
-
-// The same with its inverse (R_i + R_j) / (2 R_i R_j), from a single division.
+// Radius that enters the film force between two particles (see the convention above),
+// R = 2 R_i R_j / (R_i + R_j), with its inverse (R_i + R_j) / (2 R_i R_j), from a single division.
+// Every engine takes it from here (the same rounding everywhere).
 inline FilmRadius film_radius_pair(double radius_i, double radius_j)
 {
   const double sum = radius_i + radius_j, twice_product = 2.0 * radius_i * radius_j;

@@ -28,6 +28,7 @@
 #pragma once
 
 #include "coefficients.h"
+#include "contact_step.h"
 
 #include <algorithm>
 #include <cmath>
@@ -35,6 +36,12 @@
 namespace lubricated {
 
 constexpr double tangential_mass_ratio = 2.0 / 7.0;    // m_t / m_e for solid spheres
+constexpr double solid_sphere_inertia_ratio = 0.4;     // I / (m R^2)
+
+inline double sphere_inertia(double mass, double radius)
+{
+  return solid_sphere_inertia_ratio * mass * radius * radius;
+}
 
 struct Vec3 {
   double x = 0.0, y = 0.0, z = 0.0;
@@ -78,20 +85,18 @@ struct TangentialModel {
   bool active() const { return contact_active() || rolling_active() || film_active(); }
 };
 
-inline TangentialModel make_tangential_model(const Coefficients &c, double dt)
+// t_c: the normal contact's duration as integrated (ContactStep::contact_time), so that both
+// directions share the floor of min_steps_per_contact steps.
+inline TangentialModel make_tangential_model(const Coefficients &c, double t_c, double dt)
 {
   TangentialModel m;
   m.friction = c.friction;
   m.rolling = c.rolling_friction;
   m.dt = dt;
-  // The same floor on the contact duration as the normal direction (contact_step.h).
-  const double t_c = std::max(c.contact_time(dt), 1.5 * dt);
-  const double e_t = c.tangential_restitution();
-  const double E = e_t > 0.0 ? std::pow(e_t, dt / t_c) : 0.0;    // exp(ln(e_t) dt / t_c)
-  const double C = std::cos(M_PI * dt / t_c);
-  m.stiffness_step = (1.0 + E * E - 2.0 * E * C) / (dt * dt);
-  m.damping_step = (1.0 - E * E) / dt;
-  if (c.wet() && c.shear_film()) m.two_pi_mu = 2.0 * M_PI * c.viscosity;
+  const OscillatorStep o = oscillator_step(c.tangential_restitution(), t_c, dt);
+  m.stiffness_step = o.stiffness_step;
+  m.damping_step = o.damping_step;
+  if (c.wet() && c.shear_film()) m.two_pi_mu = 2.0 * pi * c.viscosity;
   return m;
 }
 

@@ -71,8 +71,7 @@ void PairLubricatedSpringDashpot::allocate()
       setflag[i][j] = 0;
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
   coeffs.assign((n + 1) * (n + 1), lub::Coefficients());
-  normal_models.assign((n + 1) * (n + 1), lub::NormalModel());
-  tangential_models.assign((n + 1) * (n + 1), lub::TangentialModel());
+  models.assign((n + 1) * (n + 1), lub::ContactModel());
   max_reach.assign((n + 1) * (n + 1), 0.0);
   network_load.assign((n + 1) * (n + 1), 0.0);
   network_bound.assign((n + 1) * (n + 1), 0.0);
@@ -276,9 +275,7 @@ double PairLubricatedSpringDashpot::init_one(int i, int j)
 {
   if (!setflag[i][j]) error->all(FLERR, "{}: coefficients for atom types {} {} are not set (no mixing)", STYLE, i, j);
   const lub::Coefficients &c = coeffs[index(i, j)];
-  normal_models[index(i, j)] = normal_models[index(j, i)] =
-      lub::make_normal_model(c, lub::Partner::particle, update->dt);
-  tangential_models[index(i, j)] = tangential_models[index(j, i)] = lub::make_tangential_model(c, update->dt);
+  models[index(i, j)] = models[index(j, i)] = lub::make_contact_model(c, lub::Partner::particle, update->dt);
   set_network_loads(i, j);
   if (comm->me == 0) {
     // Report what was derived (k and c per unit reduced mass, the contact resolution).
@@ -290,7 +287,7 @@ double PairLubricatedSpringDashpot::init_one(int i, int j)
   // The film of the largest pair of these types reaches farthest.
   double reach = 0.0;
   if (c.wet() && maxrad[i] > 0.0 && maxrad[j] > 0.0)
-    reach = normal_models[index(i, j)].reach(lub::lubrication_radius_pair(maxrad[i], maxrad[j]));
+    reach = models[index(i, j)].normal.reach(lub::film_radius_pair(maxrad[i], maxrad[j]).value);
   max_reach[index(i, j)] = max_reach[index(j, i)] = reach;
   return maxrad[i] + maxrad[j] + reach;
 }
@@ -301,10 +298,8 @@ void PairLubricatedSpringDashpot::update_models()
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++)
       if (setflag[i][j]) {
-        normal_models[index(i, j)] = normal_models[index(j, i)] =
-            lub::make_normal_model(coeffs[index(i, j)], lub::Partner::particle, update->dt);
-        tangential_models[index(i, j)] = tangential_models[index(j, i)] =
-            lub::make_tangential_model(coeffs[index(i, j)], update->dt);
+        models[index(i, j)] = models[index(j, i)] =
+            lub::make_contact_model(coeffs[index(i, j)], lub::Partner::particle, update->dt);
         set_network_loads(i, j);
       }
 }
@@ -313,11 +308,11 @@ void PairLubricatedSpringDashpot::update_models()
 // constants, and the larger of it and the tangential spring's (friction) for the upper bound.
 void PairLubricatedSpringDashpot::set_network_loads(int i, int j)
 {
-  const lub::NormalModel &m = normal_models[index(i, j)];
+  const lub::NormalModel &m = models[index(i, j)].normal;
   const double dt = update->dt;
   const double load = m.exact ? lub::contact_load(m.step.stiffness_step, m.step.damping_step, dt)
                               : lub::contact_load(m.contact.stiffness_per_mass, m.contact.damping_per_mass, dt);
-  const lub::TangentialModel &tm = tangential_models[index(i, j)];
+  const lub::TangentialModel &tm = models[index(i, j)].tangential;
   const double bound =
       tm.contact_active() ? std::max(load, lub::contact_load(tm.stiffness_step, tm.damping_step, dt)) : load;
   network_load[index(i, j)] = network_load[index(j, i)] = load;
@@ -415,9 +410,10 @@ double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, d
   const double radi = atom->radius[i], radj = atom->radius[j];
   const double radsum = radi + radj;
   const double r = std::sqrt(rsq);
-  const double lub_radius = lub::lubrication_radius_pair(radi, radj);
+  const lub::FilmRadius film = lub::film_radius_pair(radi, radj);
+  const double lub_radius = film.value;
   svector[2] = (r - radsum) / lub_radius;
-  const lub::NormalModel &model = normal_models[index(itype, jtype)];
+  const lub::NormalModel &model = models[index(itype, jtype)].normal;
   if (rsq == 0.0) return 0.0;
 
   double **x = atom->x, **v = atom->v;
@@ -429,7 +425,7 @@ double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, d
   const double m_e = inverse_mass_on ? lub::reduced_mass_of_inverses(inverse_mass[i], inverse_mass[j])
                                      : lub::reduced_mass(atom->rmass[i], atom->rmass[j]);
   if (m_e == 0.0) return 0.0;
-  const lub::NormalForce fn = lub::normal_force(model, r - radsum, lub_radius, m_e, u_n);
+  const lub::NormalForce fn = lub::normal_force(model, r - radsum, film, m_e, u_n);
   fforce = fn.total() / r;
   svector[0] = fn.contact;
   svector[1] = fn.lubrication;
@@ -469,8 +465,7 @@ void PairLubricatedSpringDashpot::read_restart(FILE *fp)
 
 double PairLubricatedSpringDashpot::memory_usage()
 {
-  return Pair::memory_usage() + coeffs.size() * sizeof(lub::Coefficients) +
-         normal_models.size() * sizeof(lub::NormalModel) +
+  return Pair::memory_usage() + coeffs.size() * sizeof(lub::Coefficients) + models.size() * sizeof(lub::ContactModel) +
          (candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity() + film_i.capacity() +
           film_j.capacity() + group_count.capacity() + group_keys.capacity() + record_i.capacity() +
           record_j.capacity()) *

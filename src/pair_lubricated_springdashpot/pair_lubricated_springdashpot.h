@@ -10,8 +10,7 @@
 #include "pair.h"
 
 #include "contact_mass/contact_mass.h"
-#include "lubricated/normal_model.h"
-#include "lubricated/tangential.h"
+#include "lubricated/contact.h"
 
 #include <string>
 
@@ -50,11 +49,10 @@ class PairLubricatedSpringDashpot : public Pair {
   double film_scale(int i) const { return film_budget_now ? scale_of_atom[i] : 1.0; }
 
  protected:
-  std::vector<lubricated::Coefficients> coeffs;                  // per type pair, (ntypes+1)^2
-  std::vector<lubricated::NormalModel> normal_models;            // derived from coeffs and dt
-  std::vector<lubricated::TangentialModel> tangential_models;    // tangential part, derived likewise
-  std::vector<double> maxrad;                                    // largest radius per type
-  std::vector<double> max_reach;                                 // farthest film gap per type pair
+  std::vector<lubricated::Coefficients> coeffs;    // per type pair, (ntypes+1)^2
+  std::vector<lubricated::ContactModel> models;    // derived from coeffs and dt
+  std::vector<double> maxrad;                      // largest radius per type
+  std::vector<double> max_reach;                   // farthest film gap per type pair
   bool any_wet = false;
   bool any_tangential = false;                   // friction, rolling or shear film on some type pair
   class FixContactHistory *history = nullptr;    // tangential elongation per contact
@@ -106,8 +104,8 @@ class PairLubricatedSpringDashpot : public Pair {
   // normal and shear films' (film_budget.h); both films are scaled by the same s.
   bool shear_records = false;
   std::vector<double> record_shear;
-  __attribute__((always_inline)) inline void record_films(int i, int j, double film, const double *shear, double share,
-                                                          int nlocal, int newton_pair)
+  __attribute__((always_inline)) inline void record_films(int i, int j, double film, const lubricated::Vec3 &shear,
+                                                          double share, int nlocal, int newton_pair)
   {
     load_of_atom[i] += share;
     if (newton_pair || j < nlocal) load_of_atom[j] += share;
@@ -115,8 +113,8 @@ class PairLubricatedSpringDashpot : public Pair {
     record_j[nrecord] = j;
     record_force[nrecord] = film;
     double *out = &record_shear[3 * nrecord];
-    out[0] = shear[0], out[1] = shear[1], out[2] = shear[2];
-    nrecord += (film != 0.0) | (shear[0] != 0.0) | (shear[1] != 0.0) | (shear[2] != 0.0);
+    out[0] = shear.x, out[1] = shear.y, out[2] = shear.z;
+    nrecord += (film != 0.0) | (shear.x != 0.0) | (shear.y != 0.0) | (shear.z != 0.0);
   }
   void finish_film_budget();
   void finish_shear_film_budget();
@@ -146,13 +144,6 @@ class PairLubricatedSpringDashpot : public Pair {
   void update_models();
   template <bool WET, bool TANGENTIAL, bool SPLIT = false> void eval();
   template <class Evaluate> void vector_forces(int ncandidate, int nfilm, Evaluate &evaluate);
-  // One contact's tangential force and torques (inlined into eval's loop). shear (4 doubles, or
-  // nullptr): the shear film's force on i, included in ft and the torques, and its share of the
-  // film budget for this kick time (film_budget.h); left alone where no shear film acts.
-  __attribute__((always_inline)) inline void tangential(int i, int j, int jj, const double *del, const double *dv,
-                                                        double rinv, double gap, double u_n, double lub_radius,
-                                                        double m_e, double normal_force, double *ft, double *ti,
-                                                        double *tj, double kick_time, double *shear);
 };
 
 }    // namespace LAMMPS_NS

@@ -54,8 +54,8 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
     scale_of_atom.resize(atom->nmax);
   }
   // The shear film's share has no such bound yet: with it the budget always runs.
-  for (const auto &tm : tangential_models)
-    if (tm.film_active()) return true;
+  for (const lub::ContactModel &m : models)
+    if (m.tangential.film_active()) return true;
   double *bound = load_of_atom.data();
   std::fill(bound, bound + nall, 0.0);
   for (int ii = 0; ii < list->inum; ii++) {
@@ -63,7 +63,7 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
     const int *jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      const lub::Lubrication &film = normal_models[index(type[i], type[j])].lubrication;
+      const lub::Lubrication &film = models[index(type[i], type[j])].normal.lubrication;
       if (!film.active()) continue;
       const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
       const lub::FilmRadius radius_ij = lub::film_radius_pair(radius[i], radius[j]);

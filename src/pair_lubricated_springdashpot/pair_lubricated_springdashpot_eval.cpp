@@ -1,6 +1,6 @@
 /* ----------------------------------------------------------------------
-   pair_style lubricated/springdashpot: the pair loops (eval and its vectorised passes) and
-   one contact's tangential force
+   pair_style lubricated/springdashpot: the pair loops (eval and its vectorised passes); each
+   contact is lubricated/contact.h's
 ------------------------------------------------------------------------- */
 
 #include "pair_lubricated_springdashpot.h"
@@ -33,66 +33,6 @@
 
 using namespace LAMMPS_NS;
 namespace lub = lubricated;
-
-// Tangential force ft on i (on j: -ft) and the torques ti, tj of one pair (tangential.h);
-// dv = v_i - v_j as used for u_n.
-inline void PairLubricatedSpringDashpot::tangential(int i, int j, int jj, const double *del, const double *dv_ij,
-                                                    double rinv, double gap, double u_n, double lub_radius, double m_e,
-                                                    double normal_force, double *ft, double *ti, double *tj,
-                                                    double kick_time, double *shear)
-{
-  const lub::TangentialModel &tm = tangential_models[index(atom->type[i], atom->type[j])];
-  const double radi = atom->radius[i], radj = atom->radius[j];
-  double **omega = atom->omega;
-  const lub::Vec3 n{del[0] * rinv, del[1] * rinv, del[2] * rinv};
-  const lub::Vec3 dv{dv_ij[0], dv_ij[1], dv_ij[2]};
-  const lub::Vec3 wi{omega[i][0], omega[i][1], omega[i][2]};
-  const lub::Vec3 wj{omega[j][0], omega[j][1], omega[j][2]};
-  const lub::Vec3 s =
-      lub::tangential_part(lub::minus(dv, lub::cross(lub::plus(lub::scaled(wi, radi), lub::scaled(wj, radj)), n)), n);
-  const double m_t = lub::tangential_mass_ratio * m_e;
-
-  lub::Vec3 f;
-  if (history) {
-    char &touched = history->touched(i)[jj];
-    double *h = history->values(i) + 3 * jj;
-    if (tm.contact_active() && lub::tangential_in_contact(gap)) {
-      const double fraction = touched ? 1.0 : lub::first_contact_fraction(gap, u_n, tm.dt);
-      lub::Vec3 delta{h[0], h[1], h[2]};
-      f = lub::tangential_contact_force(tm, delta, n, s, m_t, normal_force, fraction);
-      h[0] = delta.x, h[1] = delta.y, h[2] = delta.z;
-      touched = 1;
-    } else if (touched) {
-      touched = 0;
-      h[0] = h[1] = h[2] = 0.0;
-    }
-  }
-  if (tm.film_active()) {
-    const lub::Lubrication &film = normal_models[index(atom->type[i], atom->type[j])].lubrication;
-    const double eps = gap / lub_radius;
-    const lub::Vec3 fs = lub::shear_film_force(tm, s, eps, film.activation_for(lub_radius), film.eps_saturation,
-                                               film.eps_release, radi * radj / (radi + radj), m_t);
-    f = lub::plus(f, fs);
-    if (shear) {
-      shear[0] = fs.x, shear[1] = fs.y, shear[2] = fs.z;
-      shear[3] = lub::shear_film_share(lub::dot(fs, fs), lub::dot(s, s), m_t, kick_time);
-    }
-  }
-  lub::Vec3 roll;
-  if (tm.rolling_active() && gap < 0.0) {
-    // The spheres' own inertia (also in a rigid body); against an immovable atom the other's.
-    const double inertia_i = 0.4 * atom->rmass[i] * radi * radi;
-    const double inertia_j = 0.4 * atom->rmass[j] * radj * radj;
-    double inertia = inertia_i * inertia_j / (inertia_i + inertia_j);
-    if (inverse_mass_on && inverse_mass[i] == 0.0) inertia = inertia_j;
-    if (inverse_mass_on && inverse_mass[j] == 0.0) inertia = inertia_i;
-    roll = lub::rolling_torque(tm, n, lub::minus(wi, wj), radi * radj / (radi + radj), inertia, normal_force);
-  }
-  const lub::Vec3 nxf = lub::cross(n, f);
-  ft[0] = f.x, ft[1] = f.y, ft[2] = f.z;
-  ti[0] = -radi * nxf.x + roll.x, ti[1] = -radi * nxf.y + roll.y, ti[2] = -radi * nxf.z + roll.z;
-  tj[0] = -radj * nxf.x - roll.x, tj[1] = -radj * nxf.y - roll.y, tj[2] = -radj * nxf.z - roll.z;
-}
 
 // A pair outside distance `outer` (squared: outer_sq) comes within it during the coming step
 // at most if gap < reach + |u_n| dt, i.e. rsq - |dv.del| dt < outer r, tested without a sqrt.
@@ -169,13 +109,13 @@ template <class Evaluate> void PairLubricatedSpringDashpot::vector_forces(int nc
   // A list in chunks, each grouped by type pair (a counting sort within the chunk, which
   // keeps the atoms' data in the cache) unless one model serves all.
   int key[chunk], grouped_i[chunk], grouped_j[chunk];
-  group_count.resize(normal_models.size(), 0);    // all zero between chunks
+  group_count.resize(models.size(), 0);    // all zero between chunks
   auto run_list = [&](const int *list_i, const int *list_j, int count, auto &pairs) {
     for (int start = 0; start < count; start += chunk) {
       const int n = std::min(chunk, count - start);
       const int *pair_i = list_i + start, *pair_j = list_j + start;
       if (uniform_models) {
-        pairs(normal_models[index(1, 1)], pair_i, pair_j, n);
+        pairs(models[index(1, 1)].normal, pair_i, pair_j, n);
         continue;
       }
       group_keys.clear();
@@ -196,7 +136,7 @@ template <class Evaluate> void PairLubricatedSpringDashpot::vector_forces(int nc
       }
       begin = 0;
       for (int k : group_keys) {
-        pairs(normal_models[k], grouped_i + begin, grouped_j + begin, group_count[k] - begin);
+        pairs(models[k].normal, grouped_i + begin, grouped_j + begin, group_count[k] - begin);
         begin = group_count[k];
         group_count[k] = 0;
       }
@@ -225,7 +165,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   const int *ilist = list->ilist;
   const int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
-  const lub::NormalModel *model_table = normal_models.data();
+  const lub::ContactModel *model_table = models.data();
   const double *reach_table = max_reach.data();
   const int stride = ntypes_alloc + 1;
 
@@ -294,7 +234,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
 
   // Pass 2: the pairs kept by pass 1 (j kept with them: no second look-up in the neighbor
   // list; jj for the history only).
-  double **torque = atom->torque;
+  double **torque = atom->torque, **omega = atom->omega;
   const bool budget = WET && film_budget_now;
   if (budget) reserve_records(ncandidate + nfilm);
   const double kick_time =
@@ -307,7 +247,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     const double rsq = delx * delx + dely * dely + delz * delz;
     const double radi = radius[i];
     const double radsum = radi + radius[j];
-    const lub::NormalModel &model = model_table[type[i] * stride + type[j]];
+    const lub::ContactModel &model = model_table[type[i] * stride + type[j]];
     // A pair that is not in contact now has no elongation to keep.
     auto forget = [&]() {
       if (TANGENTIAL && history) {
@@ -321,23 +261,23 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     };
 
     const double *vi = v[i], *vj = v[j];
-    if (midpoint && model.exact) vi = midpoint->step_velocity(i), vj = midpoint->step_velocity(j);
+    if (midpoint && model.normal.exact) vi = midpoint->step_velocity(i), vj = midpoint->step_velocity(j);
     const double dvx = vi[0] - vj[0];
     const double dvy = vi[1] - vj[1];
     const double dvz = vi[2] - vj[2];
 
-    lub::FilmRadius film;
+    lub::ContactPoint p;
     double reach = 0.0;
-    if (WET && model.lubrication.active()) {
-      film = lub::film_radius_pair(radi, radius[j]);
-      reach = model.reach(film.value);
+    if (WET && model.normal.lubrication.active()) {
+      p.film = lub::film_radius_pair(radi, radius[j]);
+      reach = model.normal.reach(p.film.value);
     }
     const double outer = radsum + reach;
     if (rsq >= outer * outer) {
       // Apart and out of this pair's film (pass 1 used the types' largest): only a contact
       // starting, or a film entered or left, within a step can act.
       forget();
-      if (!model.exact) return;
+      if (!model.normal.exact) return;
       if (!within_a_step(rsq, dvx * delx + dvy * dely + dvz * delz, dt, outer * outer)) return;
     }
     if (rsq == 0.0) {    // coincident centres: no normal direction is defined
@@ -347,40 +287,48 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
 
     const double r = std::sqrt(rsq);
     const double rinv = 1.0 / r;
-    const double u_n = (dvx * delx + dvy * dely + dvz * delz) * rinv;
-    const double m_e =
+    p.gap = r - radsum;
+    p.u_n = (dvx * delx + dvy * dely + dvz * delz) * rinv;
+    p.reduced_mass =
         inverse ? lub::reduced_mass_of_inverses(inverse[i], inverse[j]) : lub::reduced_mass(rmass[i], rmass[j]);
-    if (m_e == 0.0) {    // neither atom can move (the vectorised loops give such pairs 0)
+    if (p.reduced_mass == 0.0) {    // neither atom can move (the vectorised loops give such pairs 0)
       forget();
       return;
     }
-    const lub::NormalForce fn = lub::normal_force(model, r - radsum, film, m_e, u_n, when);
+    lub::HistorySlot slot;
+    if (TANGENTIAL) {
+      // The slip uses the engine's velocities (under the midpoint integrator: V~, not the
+      // step velocity of the normal contact).
+      const double radj = radius[j];
+      p.n = {delx * rinv, dely * rinv, delz * rinv};
+      p.dv = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+      p.omega_i = {omega[i][0], omega[i][1], omega[i][2]};
+      p.omega_j = {omega[j][0], omega[j][1], omega[j][2]};
+      p.radius_i = radi, p.radius_j = radj;
+      p.reduced_radius = radi * radj / (radi + radj);
+      if (p.gap < 0.0 && model.tangential.rolling_active()) {
+        // The spheres' own inertia (also in a rigid body); an immovable atom does not turn.
+        p.mass_i = inverse && inverse[i] == 0.0 ? 0.0 : rmass[i];
+        p.mass_j = inverse && inverse[j] == 0.0 ? 0.0 : rmass[j];
+      }
+      if (history) slot = {history->values(i) + 3 * jj, history->touched(i)[jj] != 0};
+    }
+    const lub::ContactForces c = lub::contact_forces<TANGENTIAL>(model, p, slot, when);
+    const lub::NormalForce &fn = c.normal;
+    if (TANGENTIAL && history) history->touched(i)[jj] = slot.touched;
 
     const double fpair = fn.total() * rinv;
     double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
-    const double share = budget ? lub::film_share(fn.lubrication, m_e, u_n, kick_time) : 0.0;
+    const double share = budget ? lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time) : 0.0;
     if (budget && !(TANGENTIAL && shear_records)) record_film(i, j, fn.lubrication, share, nlocal, newton_pair);
     if (TANGENTIAL) {
-      double ft[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0}, tj[3] = {0.0, 0.0, 0.0};
-      // The slip uses the engine's velocities (under the midpoint integrator: V~, not the
-      // step velocity of the normal contact).
-      const double del[3] = {delx, dely, delz};
-      double dv[3] = {dvx, dvy, dvz};
-      if (vi != v[i])
-        for (int d = 0; d < 3; d++)
-          dv[d] = v[i][d] - v[j][d];
-      double shear[4] = {0.0, 0.0, 0.0, 0.0};    // the shear film's force on i and share
-      const bool shear_budget = budget && shear_records;
-      tangential(i, j, jj, del, dv, rinv, r - radsum, u_n, film.value, m_e, fn.contact, ft, ti, tj, kick_time,
-                 shear_budget ? shear : nullptr);
-      if (shear_budget)
-        record_films(i, j, fn.lubrication, shear, lub::contact_film_share(share, shear[3]), nlocal, newton_pair);
-      fx += ft[0], fy += ft[1], fz += ft[2];
-      for (int d = 0; d < 3; d++)
-        torque[i][d] += ti[d];
+      if (budget && shear_records)
+        record_films(i, j, fn.lubrication, c.shear, lub::contact_film_share(share, c.shear_share(kick_time)), nlocal,
+                     newton_pair);
+      fx += c.tangential.x, fy += c.tangential.y, fz += c.tangential.z;
+      torque[i][0] += c.torque_i.x, torque[i][1] += c.torque_i.y, torque[i][2] += c.torque_i.z;
       if (newton_pair || j < nlocal)
-        for (int d = 0; d < 3; d++)
-          torque[j][d] += tj[d];
+        torque[j][0] += c.torque_j.x, torque[j][1] += c.torque_j.y, torque[j][2] += c.torque_j.z;
     }
     f[i][0] += fx;
     f[i][1] += fy;

@@ -5,7 +5,7 @@
 #include "lubricated/contact_network.h"
 #include "lubricated/contact_network_message.h"
 #include "lubricated/contact_step.h"
-#include "lubricated/tangential.h"
+#include "lubricated/contact.h"
 
 #include <gtest/gtest.h>
 
@@ -158,7 +158,7 @@ TEST(ContactNetwork, LoadIsThatOfTheStepConstants)
           << "e = " << e << ", N_c = " << n;
       Coefficients c;
       c.e_dry = 0.9, c.n_contact = n, c.friction = 0.3, c.e_tangential = e;
-      const TangentialModel tm = make_tangential_model(c, dt);
+      const TangentialModel tm = make_contact_model(c, Partner::particle, dt).tangential;
       EXPECT_NEAR(contact_load(tm.stiffness_step, tm.damping_step, dt), contact_load_of_steps(e, n), 1e-12);
     }
 }

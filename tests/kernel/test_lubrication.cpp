@@ -82,11 +82,10 @@ INSTANTIATE_TEST_SUITE_P(BothPartners, Film, ::testing::Values(Partner::particle
 
 TEST(LubricationRadius, EqualSpheresGiveThePapersRadius)
 {
-  EXPECT_DOUBLE_EQ(lubrication_radius_pair(1.5, 1.5), 1.5);
-  // Leading term 6 pi mu R^2 u / (2 h) scales with the reduced radius squared.
+  EXPECT_DOUBLE_EQ(film_radius_pair(1.5, 1.5).value, 1.5);
+  // Leading term 6 pi mu R^2 u / (2 h) scales with the reduced radius squared; the radius and
+  // its inverse from one division.
   const double R1 = 1.0, R2 = 3.0, reduced = R1 * R2 / (R1 + R2);
-  EXPECT_DOUBLE_EQ(lubrication_radius_pair(R1, R2), 2.0 * reduced);
-  // The pair loop's form: the same radius and its inverse from one division.
   const FilmRadius film = film_radius_pair(R1, R2);
   EXPECT_DOUBLE_EQ(film.value, 2.0 * reduced);
   EXPECT_DOUBLE_EQ(film.inverse, 1.0 / (2.0 * reduced));

@@ -6,7 +6,7 @@
 // coefficient must be finite and positive.
 #include "lubricated/drag.h"
 #include "lubricated/normal_model.h"
-#include "lubricated/tangential.h"
+#include "lubricated/contact.h"
 
 #include <gtest/gtest.h>
 
@@ -119,7 +119,7 @@ TEST(RandomInputs, TangentialForcesAreFiniteAndNeverReverseTheSlip)
     c.shearfilm = d.chance(0.5) ? 1 : -1;
     if (!validate(c).empty()) continue;
     const double dt = d.log_uniform(1e-9, 1e-1);
-    const TangentialModel tm = make_tangential_model(c, dt);
+    const TangentialModel tm = make_contact_model(c, Partner::particle, dt).tangential;
     const Lubrication film = make_lubrication(Partner::particle, c.viscosity, c.eps_activation, c.grid_spacing,
                                               c.eps_saturation, c.eps_release);
     for (int state = 0; state < 50; ++state) {
@@ -239,7 +239,7 @@ TEST(RandomInputs, AcceptedCoefficientsGiveFiniteModelConstants)
       }
       calibration_warning(c, partner);    // must not trap
     }
-    const TangentialModel tm = make_tangential_model(c, dt);
+    const TangentialModel tm = make_contact_model(c, Partner::particle, dt).tangential;
     ASSERT_TRUE(std::isfinite(tm.stiffness_step) && tm.stiffness_step > 0.0) << where.str();
     ASSERT_TRUE(std::isfinite(tm.damping_step) && tm.damping_step >= 0.0) << where.str();
     ASSERT_TRUE(std::isfinite(tm.two_pi_mu)) << where.str();

@@ -1,5 +1,5 @@
 // Tangential kernel (tangential.h): coefficients, stick recurrence, Coulomb cap, film, rolling.
-#include "lubricated/tangential.h"
+#include "lubricated/contact.h"
 
 #include <gtest/gtest.h>
 
@@ -26,7 +26,7 @@ TEST(Tangential, OffByDefault)
   Coefficients c;
   c.e_dry = 0.9;
   EXPECT_FALSE(c.tangential());
-  EXPECT_FALSE(make_tangential_model(c, 1e-5).active());
+  EXPECT_FALSE(make_contact_model(c, Partner::particle, 1e-5).tangential.active());
   EXPECT_DOUBLE_EQ(c.tangential_restitution(), 0.9);    // e_t defaults to e_d
 }
 
@@ -36,7 +36,7 @@ TEST(Tangential, StickingOscillatorReversesSlipWithEt)
   // (entry on a step): the slip comes back as -e_t s0, the spring relaxed.
   for (double e_t : {0.9, 0.5, 0.1}) {
     const double dt = 1.0, m_t = 2.0;
-    const TangentialModel m = make_tangential_model(frictional(e_t, 1e9), dt);
+    const TangentialModel m = make_contact_model(frictional(e_t, 1e9), Partner::particle, dt).tangential;
     Vec3 delta, n{0, 0, 1};
     double s = 1.0;
     for (int k = 0; k < 8; ++k) {
@@ -49,7 +49,7 @@ TEST(Tangential, StickingOscillatorReversesSlipWithEt)
 
 TEST(Tangential, CoulombCapsTheForceAndTruncatesTheSpring)
 {
-  const TangentialModel m = make_tangential_model(frictional(0.5, 0.3), 1e-5);
+  const TangentialModel m = make_contact_model(frictional(0.5, 0.3), Partner::particle, 1e-5).tangential;
   Vec3 delta{1e-3, 0, 0}, n{0, 0, 1};
   const Vec3 f = tangential_contact_force(m, delta, n, Vec3{0.1, 0, 0}, 1e-3, 2.0);
   EXPECT_NEAR(std::sqrt(dot(f, f)), 0.3 * 2.0, 1e-12);
@@ -60,7 +60,7 @@ TEST(Tangential, CoulombCapsTheForceAndTruncatesTheSpring)
 
 TEST(Tangential, ElongationIsRotatedIntoTheTangentPlaneKeepingItsLength)
 {
-  const TangentialModel m = make_tangential_model(frictional(0.5, 1e30), 1e-5);
+  const TangentialModel m = make_contact_model(frictional(0.5, 1e30), Partner::particle, 1e-5).tangential;
   Vec3 delta{1.0, 0.0, 0.5}, n{0, 0, 1};
   tangential_contact_force(m, delta, n, Vec3{}, 1.0, 1.0);
   EXPECT_NEAR(delta.z, 0.0, 1e-15);
@@ -77,7 +77,7 @@ TEST(Tangential, ShearFilmNeverReversesTheSlipAndVanishesOutsideTheFilm)
   Coefficients c = frictional(0.5, 0.3);
   c.viscosity = 1e3;    // absurdly viscous
   c.eps_activation = 0.1;
-  const TangentialModel m = make_tangential_model(c, 1.0);
+  const TangentialModel m = make_contact_model(c, Partner::particle, 1.0).tangential;
   ASSERT_TRUE(m.film_active());
   const Vec3 s{2.0, 0, 0};
   const Vec3 f = shear_film_force(m, s, 0.01, 0.1, 1e-3, -1e-2, 1.0, 1.0);
@@ -93,7 +93,7 @@ TEST(Tangential, RollingTorqueOpposesRollingAndCannotReverseIt)
 {
   Coefficients c = frictional(0.5, 0.3);
   c.rolling_friction = 0.1;
-  const TangentialModel m = make_tangential_model(c, 1e-5);
+  const TangentialModel m = make_contact_model(c, Partner::particle, 1e-5).tangential;
   const Vec3 n{0, 0, 1}, w{0, 3.0, 0.7};    // the twist (along n) is not resisted
   const Vec3 t = rolling_torque(m, n, w, 1e-3, 1.0, 10.0);
   EXPECT_NEAR(t.y, -0.1 * 1e-3 * 10.0, 1e-15);

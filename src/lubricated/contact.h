@@ -1,0 +1,146 @@
+// One contact, whole: the normal interaction (spring-dashpot and film, normal_model.h) and the
+// tangential ones (friction over a history slot, the shear film, rolling resistance;
+// tangential.h) of a particle i and its partner, a particle j or a wall, as forces on i and
+// torques on both (doc/model.rst). The pair style and fix wall/lubrication evaluate every
+// contact with contact_forces(); LIGGGHTS keeps its own tangential and rolling models (its
+// users' syntax) and calls the normal part, normal_force().
+//
+// A wall is a partner that neither moves with the contact nor turns: radius_j = 0, omega_j = 0,
+// inertia_j = 0, reduced radius R_i. Conventions of n, gap, u_n and m_e: normal_model.h.
+#pragma once
+
+#include "film_budget.h"
+#include "normal_model.h"
+#include "tangential.h"
+
+namespace lubricated {
+
+// Everything a type pair (or a wall) derives from its coefficients and the time step.
+struct ContactModel {
+  NormalModel normal;
+  TangentialModel tangential;
+};
+
+inline ContactModel make_contact_model(const Coefficients &c, Partner partner, double dt)
+{
+  ContactModel m;
+  m.normal = make_normal_model(c, partner, dt);
+  m.tangential = make_tangential_model(c, m.normal.step.contact_time, dt);
+  return m;
+}
+
+// The contact as the engine sees it this step.
+struct ContactPoint {
+  // Normal (normal_model.h): gap, the normal velocity over the last step, m_e, the film's R.
+  double gap = 0.0, u_n = 0.0, reduced_mass = 0.0;
+  FilmRadius film;
+  // Tangential (tangential.h), read only where the model has tangential parts: the unit normal,
+  // v_i - v_j and the spins as the engine holds them, the lever arms, R_e = R_i R_j / (R_i + R_j)
+  // and the masses of the spheres that turn with the contact (solid spheres, for the rolling
+  // inertia; 0: this side does not turn with it: a wall, an immovable atom; read only in overlap
+  // with rolling resistance, so an engine may leave them unset elsewhere).
+  Vec3 n, dv, omega_i, omega_j;
+  double radius_i = 0.0, radius_j = 0.0, reduced_radius = 0.0;
+  double mass_i = 0.0, mass_j = 0.0;
+};
+
+// The contact's friction history (tangential.h), where the engine keeps it: the elongation
+// delta (3 values; nullptr where none is kept: no friction force) and whether the contact
+// touched at the last step. Both are updated in place; a contact out of overlap forgets its
+// elongation. (The flag is a copy, not a pointer into the engine's char flags: a store
+// through a char pointer may alias anything and costs reloads in the pair loop.)
+struct HistorySlot {
+  double *elongation = nullptr;
+  bool touched = false;
+};
+
+struct ContactForces {
+  NormalForce normal;    // along n, and the spring's energy
+  // Force on i at the contact point (on j the opposite) and the torques on i and j: friction,
+  // shear film and rolling; with shear_apart, the shear film is left out of them and given in
+  // shear and shear_torque_i alone (on j: radius_j / radius_i of it).
+  Vec3 tangential, torque_i, torque_j;
+  Vec3 shear, shear_torque_i;
+  Vec3 slip;                       // s (tangential.h)
+  double tangential_mass = 0.0;    // m_t = 2/7 m_e
+
+  // The shear film's share of the film budget for this kick time (film_budget.h).
+  double shear_share(double kick_time) const
+  {
+    return shear_film_share(dot(shear, shear), dot(slip, slip), tangential_mass, kick_time);
+  }
+};
+
+namespace detail {
+
+// Moment of inertia of the relative rolling, 1/I_e = 1/I_i + 1/I_j over the sides that turn.
+inline double rolling_inertia(const ContactPoint &p)
+{
+  const double inertia_i = sphere_inertia(p.mass_i, p.radius_i), inertia_j = sphere_inertia(p.mass_j, p.radius_j);
+  if (inertia_j == 0.0) return inertia_i;
+  if (inertia_i == 0.0) return inertia_j;
+  return inertia_i * inertia_j / (inertia_i + inertia_j);
+}
+
+}    // namespace detail
+
+// The whole contact. TANGENTIAL false: the normal interaction alone (no tangential field of p
+// read, no history touched), what a scene without friction, rolling or shear film pays.
+// PARTNER: a wall's side j terms are left out at compile time (not added as zeros).
+template <bool TANGENTIAL, Partner PARTNER = Partner::particle>
+__attribute__((always_inline)) inline ContactForces contact_forces(const ContactModel &m, const ContactPoint &p,
+                                                                   HistorySlot &history,
+                                                                   Evaluation when = Evaluation::step,
+                                                                   bool shear_apart = false)
+{
+  const NormalForce normal = normal_force(m.normal, p.gap, p.film, p.reduced_mass, p.u_n, when);
+  if (!TANGENTIAL) {
+    ContactForces out;
+    out.normal = normal;
+    return out;
+  }
+  // The tangential parts in locals, the result assembled once (a default-built result that the
+  // branches overwrite stays in memory and costs a zero fill per contact).
+  const TangentialModel &tm = m.tangential;
+  constexpr bool wall = PARTNER == Partner::wall;
+  // Slip of the surfaces (tangential.h): (v_i - v_j) - (R_i omega_i + R_j omega_j) x n.
+  const Vec3 lever =
+      wall ? scaled(p.omega_i, p.radius_i) : plus(scaled(p.omega_i, p.radius_i), scaled(p.omega_j, p.radius_j));
+  const Vec3 s = tangential_part(minus(p.dv, cross(lever, p.n)), p.n);
+  const double m_t = tangential_mass_ratio * p.reduced_mass;
+
+  Vec3 f;
+  if (history.elongation) {
+    double *h = history.elongation;
+    if (tm.contact_active() && tangential_in_contact(p.gap)) {
+      const double fraction = history.touched ? 1.0 : first_contact_fraction(p.gap, p.u_n, tm.dt);
+      Vec3 delta{h[0], h[1], h[2]};
+      f = tangential_contact_force(tm, delta, p.n, s, m_t, normal.contact, fraction);
+      h[0] = delta.x, h[1] = delta.y, h[2] = delta.z;
+      history.touched = true;
+    } else if (history.touched) {
+      history.touched = false;
+      h[0] = h[1] = h[2] = 0.0;
+    }
+  }
+  Vec3 shear, shear_torque_i;
+  if (tm.film_active()) {
+    const Lubrication &film = m.normal.lubrication;
+    shear = shear_film_force(tm, s, p.gap / p.film.value, film.activation_for(p.film.value), film.eps_saturation,
+                             film.eps_release, p.reduced_radius, m_t);
+    if (shear_apart)
+      shear_torque_i = scaled(cross(p.n, shear), -p.radius_i);
+    else
+      f = plus(f, shear);
+  }
+  Vec3 roll;
+  if (tm.rolling_active() && p.gap < 0.0)
+    roll = rolling_torque(tm, p.n, wall ? p.omega_i : minus(p.omega_i, p.omega_j), p.reduced_radius,
+                          wall ? sphere_inertia(p.mass_i, p.radius_i) : detail::rolling_inertia(p), normal.contact);
+  const Vec3 nxf = cross(p.n, f);
+  const Vec3 torque_i = plus(scaled(nxf, -p.radius_i), roll);
+  const Vec3 torque_j = wall ? Vec3{} : minus(scaled(nxf, -p.radius_j), roll);
+  return ContactForces{normal, f, torque_i, torque_j, shear, shear_torque_i, s, m_t};
+}
+
+}    // namespace lubricated
