@@ -87,11 +87,9 @@ inline double rolling_inertia(const ContactPoint &p)
 // The whole contact. TANGENTIAL false: the normal interaction alone (no tangential field of p
 // read, no history touched), what a scene without friction, rolling or shear film pays.
 // PARTNER: a wall's side j terms are left out at compile time (not added as zeros).
-template <bool TANGENTIAL, Partner PARTNER = Partner::particle>
-__attribute__((always_inline)) inline ContactForces contact_forces(const ContactModel &m, const ContactPoint &p,
-                                                                   HistorySlot &history,
-                                                                   Evaluation when = Evaluation::step,
-                                                                   bool shear_apart = false)
+template <bool TANGENTIAL, Partner PARTNER = Partner::particle> __attribute__((always_inline)) inline ContactForces
+contact_forces(const ContactModel &m, const ContactPoint &p, HistorySlot &history, Evaluation when = Evaluation::step,
+               bool shear_apart = false)
 {
   const NormalForce normal = normal_force(m.normal, p.gap, p.film, p.reduced_mass, p.u_n, when);
   if (!TANGENTIAL) {

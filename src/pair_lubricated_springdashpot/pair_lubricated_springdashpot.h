@@ -142,7 +142,26 @@ class PairLubricatedSpringDashpot : public Pair {
   int ntypes_alloc = 0;
   int index(int itype, int jtype) const { return itype * (ntypes_alloc + 1) + jtype; }
   void update_models();
+  // The pair loops (pair_lubricated_springdashpot_eval.cpp): eval() is pass 1 (select_pairs(),
+  // the entries that can act within the step) and pass 2 (evaluate_pair() on each, or the
+  // vectorised vector_forces() with evaluate_pair() for the rest).
   template <bool WET, bool TANGENTIAL, bool SPLIT = false> void eval();
+  void update_step_reach();
+  template <bool WET, bool TANGENTIAL, bool SPLIT> int select_pairs(int &nfilm);
+  // What every pair of one eval() reads, gathered once per call.
+  struct PairLoop {
+    double **x, **v, **f, **torque, **omega;
+    const double *radius, *rmass, *inverse;    // inverse: inverse masses, or nullptr (rmass)
+    const int *type;
+    const lubricated::ContactModel *models;
+    int stride, nlocal, newton_pair;
+    double dt, kick_time;    // kick_time: the film budget's (film_budget.h)
+    lubricated::Evaluation when;
+    bool budget;    // this step keeps the film budget
+  };
+  template <bool WET, bool TANGENTIAL>
+  __attribute__((always_inline)) inline void evaluate_pair(const PairLoop &loop, int i, int j, int jj);
+  __attribute__((always_inline)) inline void forget_history(int i, int jj);
   template <class Evaluate> void vector_forces(int ncandidate, int nfilm, Evaluate &evaluate);
 };
 

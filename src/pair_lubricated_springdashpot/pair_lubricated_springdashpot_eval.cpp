@@ -146,46 +146,40 @@ template <class Evaluate> void PairLubricatedSpringDashpot::vector_forces(int nc
   run_list(candidate_i.data(), candidate_j.data(), ncandidate, kept_pairs);
 }
 
-template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpot::eval()
+// How far each owned or ghost atom can move in the coming step (|v|_1 dt >= |v| dt): the pairs
+// that can close their gap within it are within the sum of both.
+void PairLubricatedSpringDashpot::update_step_reach()
 {
-  double **x = atom->x;
-  double **v = atom->v;
-  double **f = atom->f;
-  const double *radius = atom->radius;
-  const double *rmass = atom->rmass;
-  const int *type = atom->type;
-  const int nlocal = atom->nlocal;
-  const int newton_pair = force->newton_pair;
   const double dt = update->dt;
-  // Full-step velocities at a run start, used by each integrator its own way (contact_step.h).
-  const lub::Evaluation when = lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
-  const double *inverse = inverse_mass_on ? inverse_mass.data() : nullptr;
-
-  const int inum = list->inum;
-  const int *ilist = list->ilist;
-  const int *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
-  const lub::ContactModel *model_table = models.data();
-  const double *reach_table = max_reach.data();
-  const int stride = ntypes_alloc + 1;
-
-  // How far each owned or ghost atom can move in the coming step (|v|_1 dt >= |v| dt): the
-  // pairs that can close their gap within it are within the sum of both.
+  double **v = atom->v;
   const int nall = atom->nlocal + atom->nghost;
   if (static_cast<int>(step_reach.size()) < nall) step_reach.resize(atom->nmax);
   for (int k = 0; k < nall; k++) {
     const double *vk = midpoint ? midpoint->step_velocity(k) : v[k];
     step_reach[k] = (std::fabs(vk[0]) + std::fabs(vk[1]) + std::fabs(vk[2])) * dt;
   }
-  const double *moves = step_reach.data();
+}
 
-  // Pass 1, branch-free: keep the list entries that can act within the coming step: in the
-  // film's reach (the largest of the two types) or in contact, or within what both atoms
-  // can move in a step. With friction, entries holding an elongation to forget are kept too.
-  // Whether an entry is kept follows no pattern a branch predictor could learn, hence no branch.
-  // SPLIT: entries apart by more than both atoms can move in the step (no contact can start)
-  // but in the film's reach go to the film-only list instead.
-  int ncandidate = 0, nfilm = 0;
+// Pass 1, branch-free: keep the list entries that can act within the coming step: in the
+// film's reach (the largest of the two types) or in contact, or within what both atoms can
+// move in a step. With friction, entries holding an elongation to forget are kept too.
+// Whether an entry is kept follows no pattern a branch predictor could learn, hence no branch.
+// SPLIT: entries apart by more than both atoms can move in the step (no contact can start) but
+// in the film's reach go to the film-only list instead. Returns the candidates' count.
+template <bool WET, bool TANGENTIAL, bool SPLIT> int PairLubricatedSpringDashpot::select_pairs(int &nfilm)
+{
+  double **x = atom->x;
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+  const double *reach_table = max_reach.data();
+  const double *moves = step_reach.data();
+  const int stride = ntypes_alloc + 1;
+  int ncandidate = 0;
+  nfilm = 0;
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
@@ -227,125 +221,155 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     }
   }
 
+  return ncandidate;
+}
+
+// A pair that is not in contact now has no elongation to keep.
+inline void PairLubricatedSpringDashpot::forget_history(int i, int jj)
+{
+  char &touched = history->touched(i)[jj];
+  if (touched) {
+    touched = 0;
+    double *h = history->values(i) + 3 * jj;
+    h[0] = h[1] = h[2] = 0.0;
+  }
+}
+
+// Pass 2: one pair kept by pass 1 (jj, its place in i's neighbor list, for the history only):
+// the whole contact (lubricated/contact.h), the film budget's records, forces, torques, tallies.
+template <bool WET, bool TANGENTIAL>
+inline void PairLubricatedSpringDashpot::evaluate_pair(const PairLoop &loop, const int i, const int j, const int jj)
+{
+  double **x = loop.x, **v = loop.v, **f = loop.f;
+  const double *radius = loop.radius, *rmass = loop.rmass, *inverse = loop.inverse;
+  const int nlocal = loop.nlocal, newton_pair = loop.newton_pair;
+  const double dt = loop.dt, kick_time = loop.kick_time;
+  const bool budget = WET && loop.budget;
+  const double delx = x[i][0] - x[j][0];
+  const double dely = x[i][1] - x[j][1];
+  const double delz = x[i][2] - x[j][2];
+  const double rsq = delx * delx + dely * dely + delz * delz;
+  const double radi = radius[i];
+  const double radsum = radi + radius[j];
+  const lub::ContactModel &model = loop.models[loop.type[i] * loop.stride + loop.type[j]];
+  auto forget = [&]() {
+    if (TANGENTIAL && history) forget_history(i, jj);
+  };
+
+  const double *vi = v[i], *vj = v[j];
+  if (midpoint && model.normal.exact) vi = midpoint->step_velocity(i), vj = midpoint->step_velocity(j);
+  const double dvx = vi[0] - vj[0];
+  const double dvy = vi[1] - vj[1];
+  const double dvz = vi[2] - vj[2];
+
+  lub::ContactPoint p;
+  double reach = 0.0;
+  if (WET && model.normal.lubrication.active()) {
+    p.film = lub::film_radius_pair(radi, radius[j]);
+    reach = model.normal.reach(p.film.value);
+  }
+  const double outer = radsum + reach;
+  if (rsq >= outer * outer) {
+    // Apart and out of this pair's film (pass 1 used the types' largest): only a contact
+    // starting, or a film entered or left, within a step can act.
+    forget();
+    if (!model.normal.exact) return;
+    if (!within_a_step(rsq, dvx * delx + dvy * dely + dvz * delz, dt, outer * outer)) return;
+  }
+  if (rsq == 0.0) {    // coincident centres: no normal direction is defined
+    forget();
+    return;
+  }
+
+  const double r = std::sqrt(rsq);
+  const double rinv = 1.0 / r;
+  p.gap = r - radsum;
+  p.u_n = (dvx * delx + dvy * dely + dvz * delz) * rinv;
+  p.reduced_mass =
+      inverse ? lub::reduced_mass_of_inverses(inverse[i], inverse[j]) : lub::reduced_mass(rmass[i], rmass[j]);
+  if (p.reduced_mass == 0.0) {    // neither atom can move (the vectorised loops give such pairs 0)
+    forget();
+    return;
+  }
+  lub::HistorySlot slot;
+  if (TANGENTIAL) {
+    // The slip uses the engine's velocities (under the midpoint integrator: V~, not the
+    // step velocity of the normal contact).
+    const double radj = radius[j];
+    p.n = {delx * rinv, dely * rinv, delz * rinv};
+    p.dv = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+    p.omega_i = {loop.omega[i][0], loop.omega[i][1], loop.omega[i][2]};
+    p.omega_j = {loop.omega[j][0], loop.omega[j][1], loop.omega[j][2]};
+    p.radius_i = radi, p.radius_j = radj;
+    p.reduced_radius = radi * radj / (radi + radj);
+    if (p.gap < 0.0 && model.tangential.rolling_active()) {
+      // The spheres' own inertia (also in a rigid body); an immovable atom does not turn.
+      p.mass_i = inverse && inverse[i] == 0.0 ? 0.0 : rmass[i];
+      p.mass_j = inverse && inverse[j] == 0.0 ? 0.0 : rmass[j];
+    }
+    if (history) slot = {history->values(i) + 3 * jj, history->touched(i)[jj] != 0};
+  }
+  const lub::ContactForces c = lub::contact_forces<TANGENTIAL>(model, p, slot, loop.when);
+  const lub::NormalForce &fn = c.normal;
+  if (TANGENTIAL && history) history->touched(i)[jj] = slot.touched;
+
+  const double fpair = fn.total() * rinv;
+  double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
+  const double share = budget ? lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time) : 0.0;
+  if (budget && !(TANGENTIAL && shear_records)) record_film(i, j, fn.lubrication, share, nlocal, newton_pair);
+  if (TANGENTIAL) {
+    if (budget && shear_records)
+      record_films(i, j, fn.lubrication, c.shear, lub::contact_film_share(share, c.shear_share(kick_time)), nlocal,
+                   newton_pair);
+    fx += c.tangential.x, fy += c.tangential.y, fz += c.tangential.z;
+    loop.torque[i][0] += c.torque_i.x, loop.torque[i][1] += c.torque_i.y, loop.torque[i][2] += c.torque_i.z;
+    if (newton_pair || j < nlocal)
+      loop.torque[j][0] += c.torque_j.x, loop.torque[j][1] += c.torque_j.y, loop.torque[j][2] += c.torque_j.z;
+  }
+  f[i][0] += fx;
+  f[i][1] += fy;
+  f[i][2] += fz;
+  if (newton_pair || j < nlocal) {
+    f[j][0] -= fx;
+    f[j][1] -= fy;
+    f[j][2] -= fz;
+  }
+  if (evflag) {
+    if (TANGENTIAL)
+      ev_tally_xyz(i, j, nlocal, newton_pair, fn.energy, 0.0, fx, fy, fz, delx, dely, delz);
+    else
+      ev_tally(i, j, nlocal, newton_pair, fn.energy, 0.0, fpair, delx, dely, delz);
+  }
+}
+
+template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpot::eval()
+{
+  update_step_reach();
+  int nfilm;
+  const int ncandidate = select_pairs<WET, TANGENTIAL, SPLIT>(nfilm);
   if (network_check && !update->setupflag && update->ntimestep >= network_next) {
     network_next = update->ntimestep + lub::network_check_interval;
     check_contact_network(ncandidate);
   }
 
-  // Pass 2: the pairs kept by pass 1 (j kept with them: no second look-up in the neighbor
-  // list; jj for the history only).
-  double **torque = atom->torque, **omega = atom->omega;
-  const bool budget = WET && film_budget_now;
-  if (budget) reserve_records(ncandidate + nfilm);
-  const double kick_time =
-      lub::film_kick_time(dt, when != lub::Evaluation::step, when == lub::Evaluation::midpoint_start);
-  auto evaluate = [&](const int i, const int j, const int jj) __attribute__((always_inline))
+  // Full-step velocities at a run start, used by each integrator its own way (contact_step.h).
+  PairLoop loop;
+  loop.x = atom->x, loop.v = atom->v, loop.f = atom->f, loop.torque = atom->torque, loop.omega = atom->omega;
+  loop.radius = atom->radius, loop.rmass = atom->rmass, loop.inverse = inverse_mass_on ? inverse_mass.data() : nullptr;
+  loop.type = atom->type;
+  loop.models = models.data(), loop.stride = ntypes_alloc + 1;
+  loop.nlocal = atom->nlocal, loop.newton_pair = force->newton_pair;
+  loop.dt = update->dt;
+  loop.when = lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
+  loop.kick_time =
+      lub::film_kick_time(loop.dt, loop.when != lub::Evaluation::step, loop.when == lub::Evaluation::midpoint_start);
+  loop.budget = WET && film_budget_now;
+  if (loop.budget) reserve_records(ncandidate + nfilm);
+
+  auto evaluate = [ this, loop ](int i, int j, int jj) __attribute__((always_inline))
   {
-    const double delx = x[i][0] - x[j][0];
-    const double dely = x[i][1] - x[j][1];
-    const double delz = x[i][2] - x[j][2];
-    const double rsq = delx * delx + dely * dely + delz * delz;
-    const double radi = radius[i];
-    const double radsum = radi + radius[j];
-    const lub::ContactModel &model = model_table[type[i] * stride + type[j]];
-    // A pair that is not in contact now has no elongation to keep.
-    auto forget = [&]() {
-      if (TANGENTIAL && history) {
-        char &touched = history->touched(i)[jj];
-        if (touched) {
-          touched = 0;
-          double *h = history->values(i) + 3 * jj;
-          h[0] = h[1] = h[2] = 0.0;
-        }
-      }
-    };
-
-    const double *vi = v[i], *vj = v[j];
-    if (midpoint && model.normal.exact) vi = midpoint->step_velocity(i), vj = midpoint->step_velocity(j);
-    const double dvx = vi[0] - vj[0];
-    const double dvy = vi[1] - vj[1];
-    const double dvz = vi[2] - vj[2];
-
-    lub::ContactPoint p;
-    double reach = 0.0;
-    if (WET && model.normal.lubrication.active()) {
-      p.film = lub::film_radius_pair(radi, radius[j]);
-      reach = model.normal.reach(p.film.value);
-    }
-    const double outer = radsum + reach;
-    if (rsq >= outer * outer) {
-      // Apart and out of this pair's film (pass 1 used the types' largest): only a contact
-      // starting, or a film entered or left, within a step can act.
-      forget();
-      if (!model.normal.exact) return;
-      if (!within_a_step(rsq, dvx * delx + dvy * dely + dvz * delz, dt, outer * outer)) return;
-    }
-    if (rsq == 0.0) {    // coincident centres: no normal direction is defined
-      forget();
-      return;
-    }
-
-    const double r = std::sqrt(rsq);
-    const double rinv = 1.0 / r;
-    p.gap = r - radsum;
-    p.u_n = (dvx * delx + dvy * dely + dvz * delz) * rinv;
-    p.reduced_mass =
-        inverse ? lub::reduced_mass_of_inverses(inverse[i], inverse[j]) : lub::reduced_mass(rmass[i], rmass[j]);
-    if (p.reduced_mass == 0.0) {    // neither atom can move (the vectorised loops give such pairs 0)
-      forget();
-      return;
-    }
-    lub::HistorySlot slot;
-    if (TANGENTIAL) {
-      // The slip uses the engine's velocities (under the midpoint integrator: V~, not the
-      // step velocity of the normal contact).
-      const double radj = radius[j];
-      p.n = {delx * rinv, dely * rinv, delz * rinv};
-      p.dv = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
-      p.omega_i = {omega[i][0], omega[i][1], omega[i][2]};
-      p.omega_j = {omega[j][0], omega[j][1], omega[j][2]};
-      p.radius_i = radi, p.radius_j = radj;
-      p.reduced_radius = radi * radj / (radi + radj);
-      if (p.gap < 0.0 && model.tangential.rolling_active()) {
-        // The spheres' own inertia (also in a rigid body); an immovable atom does not turn.
-        p.mass_i = inverse && inverse[i] == 0.0 ? 0.0 : rmass[i];
-        p.mass_j = inverse && inverse[j] == 0.0 ? 0.0 : rmass[j];
-      }
-      if (history) slot = {history->values(i) + 3 * jj, history->touched(i)[jj] != 0};
-    }
-    const lub::ContactForces c = lub::contact_forces<TANGENTIAL>(model, p, slot, when);
-    const lub::NormalForce &fn = c.normal;
-    if (TANGENTIAL && history) history->touched(i)[jj] = slot.touched;
-
-    const double fpair = fn.total() * rinv;
-    double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
-    const double share = budget ? lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time) : 0.0;
-    if (budget && !(TANGENTIAL && shear_records)) record_film(i, j, fn.lubrication, share, nlocal, newton_pair);
-    if (TANGENTIAL) {
-      if (budget && shear_records)
-        record_films(i, j, fn.lubrication, c.shear, lub::contact_film_share(share, c.shear_share(kick_time)), nlocal,
-                     newton_pair);
-      fx += c.tangential.x, fy += c.tangential.y, fz += c.tangential.z;
-      torque[i][0] += c.torque_i.x, torque[i][1] += c.torque_i.y, torque[i][2] += c.torque_i.z;
-      if (newton_pair || j < nlocal)
-        torque[j][0] += c.torque_j.x, torque[j][1] += c.torque_j.y, torque[j][2] += c.torque_j.z;
-    }
-    f[i][0] += fx;
-    f[i][1] += fy;
-    f[i][2] += fz;
-    if (newton_pair || j < nlocal) {
-      f[j][0] -= fx;
-      f[j][1] -= fy;
-      f[j][2] -= fz;
-    }
-    if (evflag) {
-      if (TANGENTIAL)
-        ev_tally_xyz(i, j, nlocal, newton_pair, fn.energy, 0.0, fx, fy, fz, delx, dely, delz);
-      else
-        ev_tally(i, j, nlocal, newton_pair, fn.energy, 0.0, fpair, delx, dely, delz);
-    }
+    evaluate_pair<WET, TANGENTIAL>(loop, i, j, jj);
   };
-
   if (SPLIT) {
     vector_forces(ncandidate, nfilm, evaluate);
     return;

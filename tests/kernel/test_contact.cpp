@@ -261,7 +261,9 @@ TEST(WholeContact, PartsAddUpAndTheWallIsAPartnerThatDoesNotTurn)
     EXPECT_EQ(a.touched, d.touched);
     // Out of overlap the elongation is forgotten; in it kept.
     EXPECT_EQ(a.touched, eps < 0.0) << eps;
-    if (eps >= 0.0) { EXPECT_EQ(h1[0], 0.0); }
+    if (eps >= 0.0) {
+      EXPECT_EQ(h1[0], 0.0);
+    }
     // Where the shear film acts (eps_2 < eps < eps_al) it is part of the whole.
     EXPECT_EQ(norm(whole.shear) > 0.0, eps > -0.01 && eps < 0.1) << eps;
   }
