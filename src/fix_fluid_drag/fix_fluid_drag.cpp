@@ -9,6 +9,8 @@
 
 #include "fix_fluid_drag.h"
 
+#include "unit_style/unit_style.h"
+
 #include "atom.h"
 #include "domain.h"
 #include "error.h"
@@ -30,6 +32,7 @@ static constexpr const char *STYLE = "Fix fluid/drag";
 
 FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
 {
+  require_supported_units(lmp, STYLE);
   if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR, "{} requires atom_style sphere (per-atom radius and rmass)", STYLE);
 

@@ -16,6 +16,8 @@
 
 #include "fix_nve_sphere_midpoint.h"
 
+#include "unit_style/unit_style.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
@@ -31,6 +33,7 @@ static constexpr const char *STYLE = "Fix nve/sphere/midpoint";
 
 FixNVESphereMidpoint::FixNVESphereMidpoint(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
 {
+  require_supported_units(lmp, STYLE);
   if (narg > 3) error->all(FLERR, "{}: unknown keyword '{}' (the fix takes no arguments)", STYLE, arg[3]);
   if (!(atom->radius_flag && atom->rmass_flag && atom->omega_flag && atom->torque_flag))
     error->all(FLERR, "{} requires atom_style sphere", STYLE);

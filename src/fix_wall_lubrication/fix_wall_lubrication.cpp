@@ -8,6 +8,8 @@
 
 #include "fix_wall_lubrication.h"
 
+#include "unit_style/unit_style.h"
+
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "lubricated/check_setup.h"
 #include "lubricated/film_budget.h"
@@ -37,6 +39,7 @@ static constexpr const char *STYLE = "Fix wall/lubrication";
 FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), contact_mass(lmp)
 {
   ContactMass::watch_setforce(lmp);    // again after a `clear`
+  require_supported_units(lmp, STYLE);
   if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR, "{} requires atom_style sphere (per-atom radius and rmass)", STYLE);
 

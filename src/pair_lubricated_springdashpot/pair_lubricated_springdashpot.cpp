@@ -3,6 +3,8 @@
 ------------------------------------------------------------------------- */
 
 #include "pair_lubricated_springdashpot.h"
+
+#include "unit_style/unit_style.h"
 #include "vector_pairs.h"
 
 #include "fix_contact_history/fix_contact_history.h"
@@ -81,6 +83,7 @@ void PairLubricatedSpringDashpot::allocate()
 // pair_style lubricated/springdashpot [vector yes|no] [limit atom|pair]
 void PairLubricatedSpringDashpot::settings(int narg, char **arg)
 {
+  require_supported_units(lmp, STYLE);
   vector_enabled = true;
   limit_per_atom = true;
   for (int iarg = 0; iarg < narg; iarg += 2) {
@@ -151,6 +154,7 @@ void PairLubricatedSpringDashpot::coeff(int narg, char **arg)
 
 void PairLubricatedSpringDashpot::init_style()
 {
+  require_supported_units(lmp, STYLE);
   if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR, "{} requires atom_style sphere (per-atom radius and rmass)", STYLE);
   if (comm->ghost_velocity == 0)

@@ -62,6 +62,10 @@ CASES = {
                               "(R = 0.001)", "as lubricatedActivation <= 1"]),
     "grid absurd": (("lubricatedActivation scalar 0.09375", "lubricatedGridSpacing scalar 1e300"),
                     ["lubricatedGridSpacing = 1e+300 is out of range", "1e-100 <= dx <= 1e100"]),
+    # Forces are masses times accelerations with no conversion factor (src/unit_style/unit_style.h):
+    # LIGGGHTS's granular styles refuse such units themselves, before the model is set up.
+    "units metal": (("units si", "units metal"), ["non-consistent unit system", "si,cgs or lj"]),
+    "units real": (("units si", "units real"), ["non-consistent unit system", "si,cgs or lj"]),
     "missing restitution": (("fix m1 all property/global coefficientRestitution peratomtypepair 2 0.9 0.9 0.9 0.9", ""),
                             ["coefficientRestitution", "model lubricated"]),
 }
