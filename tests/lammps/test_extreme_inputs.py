@@ -227,3 +227,22 @@ def test_random_polydisperse_scene_never_gains_energy(lmp, seed, coefficients, i
     assert result["start"] > 0.0
     assert result["end"] <= result["start"] * (1 + 1e-9)
     assert result["end"] < 0.9 * result["start"]    # it dissipated: collisions happened
+
+
+@pytest.mark.parametrize("friction", ["", "friction 0.3"])
+def test_wall_placed_above_the_atoms_leaves_them_alone(lmp, friction):
+    """A lower wall put above every sphere (issue 18: it launched them at ~80 m/s and lost them):
+    spheres whose centres lie behind a wall are not in contact with it (a warning says how many);
+    they keep their velocity, no atom is lost. A sphere in front of it still bounces."""
+    script = scenes.wall_bounce(0.9, dt_ru=0.005, steps=200).replace(
+        "zplane 0.0 NULL", f"{friction} zplane {3 * R} NULL").replace(
+        f"create_atoms 1 single 0 0 {R * (1 + 0.2137)}",
+        f"create_atoms 1 single 0 0 {R * (1 + 0.2137)}\ncreate_atoms 1 single 0.005 0 {R * (4 + 0.2137)}").replace(
+        f"set atom 1 diameter {2 * R} density {RHO}", f"set group all diameter {2 * R} density {RHO}")
+    script += 'print "RESULT lost $(atoms) $(vz[2]:%.17g)"\n'
+    result = lmp(script)
+    atoms, vz2 = result["lost"]
+    assert atoms == 2
+    assert result["e"] == pytest.approx(-1.0, rel=1e-12)    # sphere 1 behind the wall: untouched
+    assert 0.0 < vz2 <= 0.9 * U * (1 + 1e-9)    # sphere 2 fell onto the wall's face and bounced
+    assert "1 atom(s) have their centre behind a wall (lo = 0.003, hi = NULL)" in lmp.log
