@@ -9,6 +9,8 @@
 
 #include "fix_fluid_drag.h"
 
+#include "fix_step_velocity/fix_step_velocity.h"
+
 #include "unit_style/unit_style.h"
 
 #include "atom.h"
@@ -170,6 +172,7 @@ void FixFluidDrag::init()
       error->all(FLERR, "{}: variable {} must be equal-style or atom-style", STYLE, c.name);
   }
   last_fraction_step = -1;
+  step_velocity = dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
 }
 
 void FixFluidDrag::setup(int vflag)
@@ -281,7 +284,10 @@ void FixFluidDrag::post_force(int /*vflag*/)
     modify->addstep_compute(update->ntimestep + 1);
   }
 
-  double **x = atom->x, **v = atom->v, **f = atom->f;
+  // A set-up that continues the last run drags with the velocities of its last step, as that
+  // step did (fix_step_velocity.h, kept where the pair style or a wall fix of this plugin is).
+  const bool continued = update->setupflag && step_velocity && step_velocity->continues();
+  double **x = atom->x, **v = continued ? step_velocity->velocity() : atom->v, **f = atom->f;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *mask = atom->mask;
   const double dt = update->dt;

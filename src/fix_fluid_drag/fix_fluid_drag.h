@@ -29,6 +29,7 @@ class FixFluidDrag : public Fix {
   double memory_usage() override;
 
  protected:
+  class FixStepVelocity *step_velocity = nullptr;    // the last step's velocities for a set-up
   lubricated::DragModel model;
   struct Component {
     double value = 0.0;    // constant, or the last value of an equal-style variable

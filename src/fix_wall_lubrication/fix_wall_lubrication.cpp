@@ -11,6 +11,7 @@
 #include "unit_style/unit_style.h"
 
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
+#include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/check_setup.h"
 #include "lubricated/film_budget.h"
 #include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
@@ -103,6 +104,13 @@ FixWallLubrication::~FixWallLubrication()
   memory->destroy(history);
 }
 
+// The shared fix that lets a run's set-up continue the last run (created here, after this fix
+// is in place, when no pair style made it).
+void FixWallLubrication::post_constructor()
+{
+  FixStepVelocity::find_or_create(lmp);
+}
+
 int FixWallLubrication::setmask()
 {
   return (coeffs.wet() ? PRE_FORCE : 0) | POST_FORCE | MIN_POST_FORCE;
@@ -124,6 +132,7 @@ void FixWallLubrication::init()
   midpoint = nullptr;
   for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
     midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
+  step_velocity = midpoint ? nullptr : dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
   pair = dynamic_cast<PairLubricatedSpringDashpot *>(force->pair_match("lubricated/springdashpot", 1));
   contact_mass.init(STYLE, !pair);    // the pair style logs them where there is one
   // Point particles are refused; with a grid spacing the smallest spheres have the largest
@@ -233,14 +242,18 @@ void FixWallLubrication::apply_films()
 void FixWallLubrication::compute_walls(bool defer_films)
 {
   double **x = atom->x;
-  double **v = atom->v;
-  double **f = atom->f;
+  // A set-up that continues the last run evaluates as its last step did, with its velocities
+  // (fix_step_velocity.h); not with rigid bodies or immovable atoms.
+  const bool continued = update->setupflag && step_velocity && step_velocity->continues() && !contact_mass.active();
+  double **v = continued ? step_velocity->velocity() : atom->v;
+  double **omega = continued ? step_velocity->spin() : atom->omega;
+  double **f = atom->f, **torque = atom->torque;
   const double *radius = atom->radius;
   const double *rmass = atom->rmass;
-  double **omega = atom->omega, **torque = atom->torque;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-  const lub::Evaluation when = lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
+  const lub::Evaluation when =
+      continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
   const bool tangential_on = model.tangential.active();
 
   for (double &s : local_sums)
@@ -271,7 +284,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
       p.omega_i = {omega[i][0], omega[i][1], omega[i][2]};
       p.radius_i = r, p.reduced_radius = r;
       p.mass_i = rmass[i];    // the sphere's own inertia, also in a rigid body
-      if (h) slot = {h, h[3] != 0.0};
+      if (h) slot = {h, h[3] != 0.0, !update->setupflag};
     }
     const lub::ContactForces c =
         tangential_on ? lub::contact_forces<true, lub::Partner::wall>(model, p, slot, when, shear_pending)

@@ -21,6 +21,7 @@ class FixWallLubrication : public Fix {
   FixWallLubrication(class LAMMPS *, int, char **);
   ~FixWallLubrication() override;
 
+  void post_constructor() override;
   int setmask() override;
   void init() override;
   void setup_pre_force(int) override;
@@ -66,6 +67,7 @@ class FixWallLubrication : public Fix {
   double global_sums[4] = {0.0, 0.0, 0.0, 0.0};
   bool sums_reduced = false;
   class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
+  class FixStepVelocity *step_velocity = nullptr;    // the last step's velocities for a set-up
   // A run computes the walls in pre_force, before the pair style, and applies their films in
   // post_force, scaled by the atoms' film budget: per owned atom, the wall films' force along
   // the axis and their summed share (valid while films_pending).

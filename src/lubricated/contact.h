@@ -52,6 +52,10 @@ struct ContactPoint {
 struct HistorySlot {
   double *elongation = nullptr;
   bool touched = false;
+  // false in a run's set-up evaluation (and `run 0`): no time passes there, so the stored
+  // elongation acts as it is and nothing is written (as LAMMPS's granular styles, which do not
+  // update history in set-up); any number of set-ups then leaves the contact as it was.
+  bool advance = true;
 };
 
 struct ContactForces {
@@ -111,12 +115,16 @@ contact_forces(const ContactModel &m, const ContactPoint &p, HistorySlot &histor
   if (history.elongation) {
     double *h = history.elongation;
     if (tm.contact_active() && tangential_in_contact(p.gap)) {
-      const double fraction = history.touched ? 1.0 : first_contact_fraction(p.gap, p.u_n, tm.dt);
       Vec3 delta{h[0], h[1], h[2]};
-      f = tangential_contact_force(tm, delta, p.n, s, m_t, normal.contact, fraction);
-      h[0] = delta.x, h[1] = delta.y, h[2] = delta.z;
-      history.touched = true;
-    } else if (history.touched) {
+      if (history.advance) {
+        const double fraction = history.touched ? 1.0 : first_contact_fraction(p.gap, p.u_n, tm.dt);
+        f = tangential_contact_force(tm, delta, p.n, s, m_t, normal.contact, fraction);
+        h[0] = delta.x, h[1] = delta.y, h[2] = delta.z;
+        history.touched = true;
+      } else {    // the stored elongation, not lengthened (a copy: nothing written)
+        f = tangential_contact_force(tm, delta, p.n, s, m_t, normal.contact, 0.0);
+      }
+    } else if (history.touched && history.advance) {
       history.touched = false;
       h[0] = h[1] = h[2] = 0.0;
     }

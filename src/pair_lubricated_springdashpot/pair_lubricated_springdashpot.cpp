@@ -9,6 +9,7 @@
 
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
+#include "fix_step_velocity/fix_step_velocity.h"
 #include "fix_wall_lubrication/fix_wall_lubrication.h"
 #include "lubricated/check_setup.h"
 #include "lubricated/contact_network.h"
@@ -203,6 +204,8 @@ void PairLubricatedSpringDashpot::init_style()
   midpoint = nullptr;
   for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
     midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
+  // Under velocity Verlet a run's set-up continues the last run's steps where it can.
+  step_velocity = midpoint ? nullptr : FixStepVelocity::find_or_create(lmp);
 
   // The vectorised loops need the step velocity in v and exactly integrated normal forces;
   // type pairs with other coefficients are grouped by type pair (vector_forces).
@@ -333,6 +336,9 @@ void PairLubricatedSpringDashpot::reset_dt()
 void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  // A set-up that continues the last run evaluates as its last step did (fix_step_velocity.h);
+  // not with rigid bodies or immovable atoms, whose velocities the reconstruction does not know.
+  continued = update->setupflag && step_velocity && step_velocity->continues() && !inverse_mass_on;
   if (inverse_mass_on && (neighbor->ago == 0 || update->setupflag)) update_inverse_mass();
   if (!film_budget)
     film_budget_now = false;
@@ -346,8 +352,9 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
     else
       eval<false, true>();
   } else {
-    // The vectorised loops for steps (a run's set-up evaluates with full-step velocities).
-    const bool vectorised = vector_loops && !update->setupflag;
+    // The vectorised loops for steps (a run's set-up evaluates with full-step velocities, unless
+    // it continues the last run's steps).
+    const bool vectorised = vector_loops && (!update->setupflag || continued);
     if (any_wet)
       vectorised ? eval<true, false, true>() : eval<true, false>();
     else

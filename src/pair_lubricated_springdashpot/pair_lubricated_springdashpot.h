@@ -58,6 +58,8 @@ class PairLubricatedSpringDashpot : public Pair {
   class FixContactHistory *history = nullptr;    // tangential elongation per contact
   std::string history_id;
   class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
+  class FixStepVelocity *step_velocity = nullptr;    // the last step's velocities for a set-up
+  bool continued = false;                            // this set-up continues the last run
   // List entries kept by eval's first pass: i, j and (with friction, for the history) jj.
   std::vector<int> candidate_i, candidate_j, candidate_jj;
   std::vector<double> step_reach;    // per atom: bound on its move in one step
@@ -146,7 +148,7 @@ class PairLubricatedSpringDashpot : public Pair {
   // the entries that can act within the step) and pass 2 (evaluate_pair() on each, or the
   // vectorised vector_forces() with evaluate_pair() for the rest).
   template <bool WET, bool TANGENTIAL, bool SPLIT = false> void eval();
-  void update_step_reach();
+  void update_step_reach(double **v);
   template <bool WET, bool TANGENTIAL, bool SPLIT> int select_pairs(int &nfilm);
   // What every pair of one eval() reads, gathered once per call.
   struct PairLoop {
@@ -158,11 +160,12 @@ class PairLubricatedSpringDashpot : public Pair {
     double dt, kick_time;    // kick_time: the film budget's (film_budget.h)
     lubricated::Evaluation when;
     bool budget;    // this step keeps the film budget
+    bool steps;     // a step, not a set-up: time passes (contact histories advance)
   };
   template <bool WET, bool TANGENTIAL>
   __attribute__((always_inline)) inline void evaluate_pair(const PairLoop &loop, int i, int j, int jj);
   __attribute__((always_inline)) inline void forget_history(int i, int jj);
-  template <class Evaluate> void vector_forces(int ncandidate, int nfilm, Evaluate &evaluate);
+  template <class Evaluate> void vector_forces(int ncandidate, int nfilm, double **v, Evaluate &evaluate);
 };
 
 }    // namespace LAMMPS_NS

@@ -8,6 +8,7 @@
 
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
+#include "fix_step_velocity/fix_step_velocity.h"
 #include "fix_wall_lubrication/fix_wall_lubrication.h"
 #include "lubricated/contact_network.h"
 #include "lubricated/contact_network_message.h"
@@ -46,13 +47,14 @@ static inline bool within_a_step(double rsq, double dv_dot_del, double dt, doubl
 // chunks that stay in the cache between computing and applying the forces; kept entries
 // where a contact starts or ends go through the general loop, evaluate(i, j, jj). Unless one
 // model serves every pair, each chunk is first grouped by type pair (a counting sort).
-template <class Evaluate> void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, Evaluate &evaluate)
+template <class Evaluate>
+void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v, Evaluate &evaluate)
 {
   if (ncandidate + nfilm == 0) return;
   double **x = atom->x, **f = atom->f;
   const int *type = atom->type;
   const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
-  const vector_pairs::Atoms atoms{x[0], atom->v[0], atom->radius, atom->rmass,
+  const vector_pairs::Atoms atoms{x[0], v[0], atom->radius, atom->rmass,
                                   inverse_mass_on ? inverse_mass.data() : nullptr};
   constexpr int chunk = 256;
   double fpair[chunk], energy[chunk], film[chunk], capacity[chunk];
@@ -148,10 +150,9 @@ template <class Evaluate> void PairLubricatedSpringDashpot::vector_forces(int nc
 
 // How far each owned or ghost atom can move in the coming step (|v|_1 dt >= |v| dt): the pairs
 // that can close their gap within it are within the sum of both.
-void PairLubricatedSpringDashpot::update_step_reach()
+void PairLubricatedSpringDashpot::update_step_reach(double **v)
 {
   const double dt = update->dt;
-  double **v = atom->v;
   const int nall = atom->nlocal + atom->nghost;
   if (static_cast<int>(step_reach.size()) < nall) step_reach.resize(atom->nmax);
   for (int k = 0; k < nall; k++) {
@@ -307,7 +308,7 @@ inline void PairLubricatedSpringDashpot::evaluate_pair(const PairLoop &loop, con
       p.mass_i = inverse && inverse[i] == 0.0 ? 0.0 : rmass[i];
       p.mass_j = inverse && inverse[j] == 0.0 ? 0.0 : rmass[j];
     }
-    if (history) slot = {history->values(i) + 3 * jj, history->touched(i)[jj] != 0};
+    if (history) slot = {history->values(i) + 3 * jj, history->touched(i)[jj] != 0, loop.steps};
   }
   const lub::ContactForces c = lub::contact_forces<TANGENTIAL>(model, p, slot, loop.when);
   const lub::NormalForce &fn = c.normal;
@@ -344,7 +345,10 @@ inline void PairLubricatedSpringDashpot::evaluate_pair(const PairLoop &loop, con
 
 template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpot::eval()
 {
-  update_step_reach();
+  // The velocities of the last step: the engine's, or in a set-up that continues the last run
+  // the ones it restored (fix_step_velocity.h).
+  double **v = continued ? step_velocity->velocity() : atom->v;
+  update_step_reach(v);
   int nfilm;
   const int ncandidate = select_pairs<WET, TANGENTIAL, SPLIT>(nfilm);
   if (network_check && !update->setupflag && update->ntimestep >= network_next) {
@@ -354,16 +358,18 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
 
   // Full-step velocities at a run start, used by each integrator its own way (contact_step.h).
   PairLoop loop;
-  loop.x = atom->x, loop.v = atom->v, loop.f = atom->f, loop.torque = atom->torque, loop.omega = atom->omega;
+  loop.x = atom->x, loop.v = v, loop.f = atom->f, loop.torque = atom->torque;
+  loop.omega = continued ? step_velocity->spin() : atom->omega;
   loop.radius = atom->radius, loop.rmass = atom->rmass, loop.inverse = inverse_mass_on ? inverse_mass.data() : nullptr;
   loop.type = atom->type;
   loop.models = models.data(), loop.stride = ntypes_alloc + 1;
   loop.nlocal = atom->nlocal, loop.newton_pair = force->newton_pair;
   loop.dt = update->dt;
-  loop.when = lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
+  loop.when = continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
   loop.kick_time =
       lub::film_kick_time(loop.dt, loop.when != lub::Evaluation::step, loop.when == lub::Evaluation::midpoint_start);
   loop.budget = WET && film_budget_now;
+  loop.steps = !update->setupflag;
   if (loop.budget) reserve_records(ncandidate + nfilm);
 
   auto evaluate = [ this, loop ](int i, int j, int jj) __attribute__((always_inline))
@@ -371,7 +377,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     evaluate_pair<WET, TANGENTIAL>(loop, i, j, jj);
   };
   if (SPLIT) {
-    vector_forces(ncandidate, nfilm, evaluate);
+    vector_forces(ncandidate, nfilm, v, evaluate);
     return;
   }
   for (int c = 0; c < ncandidate; c++)

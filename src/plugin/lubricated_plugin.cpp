@@ -10,6 +10,7 @@
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_fluid_drag/fix_fluid_drag.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
+#include "fix_step_velocity/fix_step_velocity.h"
 #include "fix_wall_lubrication/fix_wall_lubrication.h"
 #include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
 
@@ -57,6 +58,11 @@ static Fix *create_fix_history(LAMMPS *lmp, int narg, char **arg)
   return new FixContactHistory(lmp, narg, arg);
 }
 
+static Fix *create_fix_step_velocity(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixStepVelocity(lmp, narg, arg);
+}
+
 static Fix *create_fix_midpoint(LAMMPS *lmp, int narg, char **arg)
 {
   return new FixNVESphereMidpoint(lmp, narg, arg);
@@ -97,6 +103,12 @@ void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "LUBRICATED_HISTORY";
   plugin.info = "contact history of pair_style lubricated/springdashpot";
   plugin.creator.v2 = (lammpsplugin_factory2 *)&create_fix_history;
+  (*reg)(&plugin, lmp);
+
+  // Internal: created by the pair style or a wall fix, never typed by users.
+  plugin.name = FixStepVelocity::ID;
+  plugin.info = "the last step's velocities, for a run that continues the last one";
+  plugin.creator.v2 = (lammpsplugin_factory2 *)&create_fix_step_velocity;
   (*reg)(&plugin, lmp);
 
   // Which fix setforce holds its atoms (contact_mass.h): noted as each is created.

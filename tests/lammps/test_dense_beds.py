@@ -141,9 +141,9 @@ def test_interrupted_runs_never_raise_the_energy(lmp, mode, nprocs):
     energy sampled before (the two samples of one boundary step, summed in another order after
     the setup), all 256 spheres, 7.7e-9 E0 left at the end. The `run 0`s change nothing and the
     restart continues exactly as the runs in one process (both measured identical; asserted to
-    rel 1e-10). The uninterrupted run ends 11.7 % higher, on 1 and 2 ranks alike (issue 18: a
-    run's setup evaluates the forces again; not asserted here). With `limit pair` the same
-    scenes gain 1e6 E0 (next tests)."""
+    rel 1e-10), and all of them as the uninterrupted run: each set-up continues the last step
+    (src/fix_step_velocity; before, the set-ups' fresh evaluations left the split runs 11.7 %
+    below the uninterrupted one). With `limit pair` the same scenes gain 1e6 E0 (next tests)."""
     energy, atoms, final, logs = interrupted(lmp, mode, nprocs)
     steps = [int(line.split()[0]) for log in logs for line in log.splitlines()
              if len(line.split()) == 6 and line.split()[0].isdigit()]
@@ -160,9 +160,8 @@ def test_interrupted_runs_never_raise_the_energy(lmp, mode, nprocs):
     assert local <= ROUND_OFF, f"energy rose by {local:.3g} of the energy sampled before"
     assert energy[-1] < 1e-6 * energy[0]
     assert all("(limit atom)" in log for log in logs)
-    if mode != "runs":
-        runs = interrupted(lmp, "runs", nprocs)[2]
-        assert final[0] == pytest.approx(runs[0], rel=1e-10)
+    single = lmp(dense_scenes.fcc(SPLIT_MU, SPLIT_DT, steps=SPLIT_STEPS), nprocs=nprocs)["final"]
+    assert final[0] == pytest.approx(single[0], rel=1e-10)
 
 
 @pytest.mark.parametrize("mode", ["runs", "run 0", "restart"])

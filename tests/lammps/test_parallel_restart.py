@@ -43,12 +43,17 @@ def test_newton_on_and_off_agree(lmp):
 
 @pytest.mark.parametrize("nprocs", [1, 2])
 def test_restart_continues_the_run(lmp, nprocs):
-    """run 300; write_restart; run 300  ==  read_restart; run 300 (pair_coeff from the file)."""
+    """run 600  ==  run 300; write_restart; run 300  ==  read_restart; run 300 (pair_coeff from
+    the file): the set-up of a run that continues the last one evaluates as its last step did
+    (the last step's velocities restored, src/fix_step_velocity), so neither the split nor the
+    restart changes the wet collisions under way (before: e off by up to 2.4 %)."""
+    single = lmp(chain(steps=600) + dump_state(), nprocs=nprocs)
     reference = lmp(chain(steps=300, extra_run="write_restart mid.restart\nrun 300") + dump_state(),
                     nprocs=nprocs)
     restarted = lmp(continue_from_restart("fix nve all nve/sphere"), nprocs=nprocs, name="in.restart")
     assert "pair_coeff" not in (lmp.dir / "in.restart").read_text()
-    assert_same_state(reference, restarted)
+    assert_same_state(single, reference, rel=1e-12)
+    assert_same_state(reference, restarted, rel=1e-12)
 
 
 def continue_from_restart(integrator_fix, wall_extra=""):
@@ -177,8 +182,12 @@ def thermo_rows(log):
 @pytest.mark.parametrize("nprocs", [1, 2])
 def test_data_file_keeps_the_pair_coefficients(lmp, nprocs):
     """`write_data ... pair ij` writes every type pair's pair_coeff words, read_data gives them
-    back to the pair style (no pair_coeff after it): the run continues as the split run in one
-    process does (before: no coefficients were written, and read_data left the style unset)."""
+    back to the pair style (no pair_coeff after it), and the run continues (before: no
+    coefficients were written, and read_data left the style unset). A data file holds the
+    full-step velocities and no forces, so its run starts its contacts anew from (x, v) as any
+    first run does (contact_step.h: exact for an isolated pair, O(dt^2) of a many-body
+    contact's impulse): the same run as the split one to 1e-4 R in position and 1e-3 U in
+    velocity after 300 steps, not to rounding (a restart file continues exactly, test above)."""
     reference = lmp(chain(steps=300, extra_run="write_data mid.data pair ij\nrun 300") + dump_state(),
                     nprocs=nprocs)
     data = (lmp.dir / "mid.data").read_text()
@@ -194,4 +203,7 @@ neighbor {0.3e-3} bin
 run 300
 """ + dump_state(), nprocs=nprocs, name="in.data")
     assert "pair_coeff" not in (lmp.dir / "in.data").read_text()
-    assert_same_state(reference, continued)
+    assert reference.keys() == continued.keys()
+    for key in reference:
+        scale = 1e-4 * 1e-3 if key.startswith("x") else 1e-3 * 0.1    # 1e-4 R, 1e-3 U
+        assert continued[key] == pytest.approx(reference[key], rel=0, abs=scale), key

@@ -301,7 +301,8 @@ def test_one_and_two_ranks_agree_with_friction(lmp, newton, shift):
 
 @pytest.mark.parametrize("nprocs", [1, 2])
 def test_restart_continues_with_contact_history(lmp, nprocs):
-    """run 600; write_restart (contacts open); run 600 == read_restart; same fixes; run 600."""
+    """run 600; write_restart (contacts open); run 600 == read_restart; same fixes; run 600 ==
+    run 1200 (the restart file keeps the last step's velocities too)."""
     reference = lmp(frictional_scene(steps=600, extra_run="write_restart mid.restart\nrun 600")
                     + dump_state(4), nprocs=nprocs)
     restarted = lmp(f"""plugin load ${{plugin}}
@@ -315,7 +316,8 @@ neighbor {0.5 * R} bin
 neigh_modify every 1 delay 0 check no
 run 600
 """ + dump_state(4), nprocs=nprocs, name="in.restart")
-    assert_same(reference, restarted)
+    assert_same(reference, restarted, rel=1e-12)
+    assert_same(lmp(frictional_scene(steps=1200) + dump_state(4), nprocs=nprocs), reference, rel=1e-12)
 
 
 def order_flip_scene(newton="on"):
@@ -357,3 +359,38 @@ def test_history_follows_a_pair_that_changes_rank(lmp):
     # Friction acted on the sliding (the relative y speed was 0.2 U) and the order flipped.
     assert abs(serial["v1"][1] - serial["v2"][1]) < 0.15 * U
     assert serial["x1"][1] > serial["x2"][1]
+
+
+def split_wall_impact(first, zero_runs, e_t=0.5, mu=0.3, psi=1.0):
+    """wall_impact() with its run split after `first` steps and `zero_runs` times `run 0` between."""
+    script = wall_impact(e_t, mu, psi)
+    run = next(line for line in script.splitlines() if line.startswith("run "))
+    steps = int(run.split()[1])
+    return script.replace(run, f"run {first}\n" + "run 0\n" * zero_runs + f"run {steps - first}")
+
+
+@pytest.mark.parametrize("first", [22, 25])    # the sphere touches the wall in steps 22-29
+def test_run_0_inside_a_frictional_wall_contact_changes_nothing(lmp, first):
+    """Issue 18: each `run 0` re-applied the tangential history (slip ratio -0.643 split, -0.686
+    with one `run 0`, -0.774 with three). A set-up evaluation lets no time pass: it lengthens
+    and stores no elongation, so any number of them leaves the run as it was."""
+    split = lmp(split_wall_impact(first, 0))
+    for zero_runs in (1, 3):
+        assert lmp(split_wall_impact(first, zero_runs)) == split, zero_runs
+    # The second run's set-up continues the first run's last step (src/fix_step_velocity): the
+    # split run ends as the single one (before: e 0.879 for 0.9, slip ratio -0.503 for -0.5).
+    single = lmp(wall_impact(0.5, 0.3, 1.0))
+    for key in single:
+        assert split[key] == pytest.approx(single[key], rel=1e-12, abs=1e-14), key
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_run_0_between_runs_of_a_frictional_bed_changes_nothing(lmp, nprocs):
+    """Pairs and walls in contact (across ranks and the periodic boundary on 2 ranks): run 600;
+    run 600 against run 600; run 0 (three times); run 600, bit for bit; and both as run 1200
+    (to rounding: the set-up restores the last step's velocities from v and f)."""
+    plain = lmp(frictional_scene(steps=600, extra_run="run 600") + dump_state(4), nprocs=nprocs)
+    zeros = lmp(frictional_scene(steps=600, extra_run="run 0\nrun 0\nrun 0\nrun 600") + dump_state(4), nprocs=nprocs)
+    assert zeros == plain
+    single = lmp(frictional_scene(steps=1200) + dump_state(4), nprocs=nprocs)
+    assert_same(single, plain, rel=1e-12)

@@ -1,0 +1,223 @@
+/* ----------------------------------------------------------------------
+   fix LUBRICATED_STEP_VELOCITY (see fix_step_velocity.h)
+------------------------------------------------------------------------- */
+
+#include "fix_step_velocity.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "update.h"
+
+#include <cstring>
+#include <string>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static constexpr int VALUES = 6;    // vx vy vz, omega x y z
+
+FixStepVelocity *FixStepVelocity::find_or_create(LAMMPS *lmp)
+{
+  Fix *fix = lmp->modify->get_fix_by_id(ID);
+  if (!fix) fix = lmp->modify->add_fix(std::string(ID) + " all " + ID);
+  return dynamic_cast<FixStepVelocity *>(fix);
+}
+
+FixStepVelocity::FixStepVelocity(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+{
+  restart_global = 1;
+  restart_peratom = 1;
+  create_attribute = 1;
+  comm_forward = VALUES;
+  maxexchange = VALUES;
+  grow_arrays(atom->nmax);
+  for (int i = 0; i < atom->nmax; i++)
+    set_arrays(i);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+}
+
+FixStepVelocity::~FixStepVelocity()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(vhalf);
+  memory->destroy(whalf);
+}
+
+int FixStepVelocity::setmask()
+{
+  return PRE_EXCHANGE | POST_NEIGHBOR;
+}
+
+// The integrator the reconstruction assumes: fix nve/sphere (v += dt/2 f/m, omega += dt/2
+// torque / (2/5 m r^2)) and no other time integration.
+bool FixStepVelocity::integrated_by_nve_sphere() const
+{
+  bool any = false;
+  for (Fix *fix : modify->get_fix_list()) {
+    if (!fix->time_integrate) continue;
+    if (strcmp(fix->style, "nve/sphere") != 0) return false;
+    any = true;
+  }
+  return any;
+}
+
+void FixStepVelocity::half_step(int i, double *v_half, double *w_half) const
+{
+  const double dtf = 0.5 * step_dt * force->ftm2v, m = atom->rmass[i], r = atom->radius[i];
+  const double *v = atom->v[i], *f = atom->f[i];
+  for (int d = 0; d < 3; d++)
+    v_half[d] = v[d] - dtf * f[d] / m;
+  if (!(atom->omega_flag && atom->torque_flag)) return;
+  const double *w = atom->omega[i], *t = atom->torque[i];
+  const double dtw = dtf / (0.4 * m * r * r);
+  for (int d = 0; d < 3; d++)
+    w_half[d] = w[d] - dtw * t[d];
+}
+
+// Before the set-up clears the forces: the last step's velocities of the owned atoms.
+void FixStepVelocity::setup_pre_exchange()
+{
+  continuing = continuable && update->whichflag == 1 && update->dt == step_dt && integrated_by_nve_sphere();
+  if (restored) {    // from the restart file, computed when it was written
+    restored = false;
+    return;
+  }
+  if (!continuing) return;
+  for (int i = 0; i < atom->nlocal; i++)
+    half_step(i, vhalf[i], whalf[i]);
+}
+
+void FixStepVelocity::setup_post_neighbor()
+{
+  if (continuing) comm->forward_comm(this);
+}
+
+// A run that took steps of the velocity Verlet leaves a state the next set-up can continue;
+// `run 0` leaves it as it was; a minimisation does not.
+void FixStepVelocity::post_run()
+{
+  continuing = false;
+  if (update->whichflag != 1) {
+    continuable = false;
+  } else if (update->ntimestep > update->beginstep) {
+    continuable = integrated_by_nve_sphere();
+    step_dt = update->dt;
+  }
+}
+
+void FixStepVelocity::grow_arrays(int nmax)
+{
+  memory->grow(vhalf, nmax, 3, "lubricated/step_velocity:v");
+  memory->grow(whalf, nmax, 3, "lubricated/step_velocity:omega");
+}
+
+void FixStepVelocity::copy_arrays(int i, int j, int /*delflag*/)
+{
+  for (int d = 0; d < 3; d++)
+    vhalf[j][d] = vhalf[i][d], whalf[j][d] = whalf[i][d];
+}
+
+void FixStepVelocity::set_arrays(int i)
+{
+  for (int d = 0; d < 3; d++)
+    vhalf[i][d] = whalf[i][d] = 0.0;
+}
+
+int FixStepVelocity::pack_exchange(int i, double *buf)
+{
+  for (int d = 0; d < 3; d++)
+    buf[d] = vhalf[i][d], buf[3 + d] = whalf[i][d];
+  return VALUES;
+}
+
+int FixStepVelocity::unpack_exchange(int nlocal, double *buf)
+{
+  for (int d = 0; d < 3; d++)
+    vhalf[nlocal][d] = buf[d], whalf[nlocal][d] = buf[3 + d];
+  return VALUES;
+}
+
+int FixStepVelocity::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int i = list[k];
+    for (int d = 0; d < 3; d++)
+      buf[m++] = vhalf[i][d];
+    for (int d = 0; d < 3; d++)
+      buf[m++] = whalf[i][d];
+  }
+  return m;
+}
+
+void FixStepVelocity::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    for (int d = 0; d < 3; d++)
+      vhalf[i][d] = buf[m++];
+    for (int d = 0; d < 3; d++)
+      whalf[i][d] = buf[m++];
+  }
+}
+
+// Written between runs, where atom->f still holds the last step's forces.
+int FixStepVelocity::pack_restart(int i, double *buf)
+{
+  buf[0] = VALUES + 1;
+  if (continuable) {
+    half_step(i, buf + 1, buf + 4);
+  } else {
+    for (int k = 1; k <= VALUES; k++)
+      buf[k] = 0.0;
+  }
+  return VALUES + 1;
+}
+
+void FixStepVelocity::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; k++)
+    m += static_cast<int>(extra[nlocal][m]);
+  for (int d = 0; d < 3; d++)
+    vhalf[nlocal][d] = extra[nlocal][m + 1 + d], whalf[nlocal][d] = extra[nlocal][m + 4 + d];
+}
+
+int FixStepVelocity::size_restart(int /*i*/)
+{
+  return VALUES + 1;
+}
+
+int FixStepVelocity::maxsize_restart()
+{
+  return VALUES + 1;
+}
+
+void FixStepVelocity::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  const double data[2] = {continuable ? 1.0 : 0.0, step_dt};
+  const int size = sizeof(data);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(data, sizeof(double), 2, fp);
+}
+
+void FixStepVelocity::restart(char *buf)
+{
+  const auto *data = reinterpret_cast<const double *>(buf);
+  continuable = data[0] != 0.0;
+  step_dt = data[1];
+  restored = continuable;
+}
+
+double FixStepVelocity::memory_usage()
+{
+  return 2.0 * atom->nmax * 3 * sizeof(double);
+}
