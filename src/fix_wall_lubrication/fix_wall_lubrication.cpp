@@ -118,6 +118,7 @@ int FixWallLubrication::setmask()
 
 void FixWallLubrication::init()
 {
+  lub::settle_contact_time(coeffs, update->dt);
   const lub::SetupCheck check = lub::check_setup(coeffs, lub::Partner::wall, update->dt);
   if (!check.error.empty()) error->all(FLERR, "{}: {}", STYLE, check.error);
   if (comm->me == 0) {
@@ -142,10 +143,11 @@ void FixWallLubrication::init()
   films_pending = false;
 }
 
-// k = m (pi^2 + ln^2 e_d) / (N_c dt)^2 follows the time step when N_c is given.
+// A new time step: the per-step constants follow it; k and c stay (t_c settled at the first run,
+// lubricated/coefficients.h settle_contact_time).
 void FixWallLubrication::reset_dt()
 {
-  model = lub::make_contact_model(coeffs, lub::Partner::wall, update->dt);
+  model = lub::make_contact_model(coeffs, lub::Partner::wall, update->dt, &model);
 }
 
 // A wet wall is computed before the pair style, its films applied after it (within the

@@ -31,6 +31,9 @@ struct Coefficients {
   double rolling_friction = 0.0;    // rolling resistance mu_r >= 0 (a length ratio)
   int shearfilm = -1;               // shear film: 1 yes, 0 no, -1 yes when friction > 0
   double legendre = 0.0;            // A > 0: contact calibrated to e / e_d = exp(-A / St)
+  // Not a keyword: t_c = N_c dt settled at the first run that uses these coefficients
+  // (settle_contact_time); 0 before. Not packed: a restart settles it again at its first run.
+  double settled_contact_time = 0.0;
 
   static constexpr int packed_size = 14;
 
@@ -39,7 +42,10 @@ struct Coefficients {
   bool shear_film() const { return shearfilm < 0 ? friction > 0.0 : shearfilm == 1; }
   // Whether the contact needs the tangential kernel (and, for friction, contact history).
   bool tangential() const { return friction > 0.0 || rolling_friction > 0.0 || (wet() && shear_film()); }
-  double contact_time(double dt) const { return t_contact > 0.0 ? t_contact : n_contact * dt; }
+  double contact_time(double dt) const
+  {
+    return t_contact > 0.0 ? t_contact : settled_contact_time > 0.0 ? settled_contact_time : n_contact * dt;
+  }
   double steps_per_contact(double dt) const { return contact_time(dt) / dt; }
 
   void pack(double *buf) const
@@ -285,8 +291,23 @@ inline std::string validate_time_step(const Coefficients &c, double dt)
   } else if (!detail::within(c.contact_time(dt), smallest_dimensional, largest_dimensional)) {
     return "ncontact = " + detail::number(c.n_contact) + " is out of range with the time step " + detail::number(dt) +
            ": t_c = N_c dt = " + detail::number(c.contact_time(dt)) + " (allowed: 1e-100 <= t_c <= 1e100)";
+  } else if (c.settled_contact_time > 0.0 &&
+             !(c.steps_per_contact(dt) >= 1.0 && c.steps_per_contact(dt) <= largest_steps_per_contact)) {
+    return "ncontact = " + detail::number(c.n_contact) + " settled t_c = " + detail::number(c.settled_contact_time) +
+           " at the first run; the time step " + detail::number(dt) +
+           " gives N_c = t_c / dt = " + detail::number(c.steps_per_contact(dt)) +
+           " (allowed: 1 <= N_c <= 1e6; give pair_coeff again)";
   }
   return "";
+}
+
+// ncontact N_c means t_c = N_c dt with the time step of the first run that uses the
+// coefficients; from then on t_c is the contact's own, as with tcontact: a later time step
+// (timestep, fix dt/reset) keeps k and c (a spring that stiffened with a smaller step would
+// release energy into a contact under way) and changes only the steps per contact.
+inline void settle_contact_time(Coefficients &c, double dt)
+{
+  if (!(c.t_contact > 0.0) && !(c.settled_contact_time > 0.0)) c.settled_contact_time = c.n_contact * dt;
 }
 
 // The coefficients as pair_coeff words (write_data's Pair Coeffs): parse_coefficients() of this

@@ -21,10 +21,12 @@ struct ContactModel {
   TangentialModel tangential;
 };
 
-inline ContactModel make_contact_model(const Coefficients &c, Partner partner, double dt)
+// reuse: the model for the last time step, where there is one (contact_step.h: its tables).
+inline ContactModel make_contact_model(const Coefficients &c, Partner partner, double dt,
+                                       const ContactModel *reuse = nullptr)
 {
   ContactModel m;
-  m.normal = make_normal_model(c, partner, dt);
+  m.normal = make_normal_model(c, partner, dt, reuse ? &reuse->normal : nullptr);
   m.tangential = make_tangential_model(c, m.normal.step.contact_time, dt);
   return m;
 }

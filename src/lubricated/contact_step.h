@@ -29,15 +29,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 
 namespace lubricated {
 
 struct ContactStep {
-  // Entry and exit times within a step depend on the gap ratio only; tabulated guesses
-  // (see make_contact_step) let Newton finish in one or two iterations.
+  // Entry and exit times within a step depend on the gap ratio and the steps per contact only;
+  // tabulated guesses (see make_contact_step) let Newton finish in one or two iterations.
   static constexpr int table_size = 256;
-  double exit_guess[table_size + 1];     // exit time s against x = r / (1 + r), r = g1 / -g0
-  double entry_guess[table_size + 1];    // entry time s against x = r / (1 + r), r = -g1 / g0
+  // Shared, kept for the process (detail::guess_tables): a contact's constants copy cheaply.
+  const double *exit_guess = nullptr;     // exit time s / dt against x = r / (1 + r), r = g1 / -g0
+  const double *entry_guess = nullptr;    // entry time s / dt against x = r / (1 + r), r = -g1 / g0
+  double table_steps = 0.0;               // t_c / dt (and table_restitution e_d) they were built for
+  double table_restitution = 0.0;
   double dt = 0.0;
   double inv_dt = 0.0;          // 1 / dt (engines multiply: no division per pair)
   double contact_time = 0.0;    // t_c as integrated (at least min_steps_per_contact steps)
@@ -171,35 +176,88 @@ template <class F> double falling_root(F fdf, double lo, double hi, double guess
 
 }    // namespace detail
 
-inline ContactStep make_contact_step(const SpringDashpot &sd, double dt)
+// Steps per contact by which guess tables may be off before others are taken (make_contact_step).
+constexpr double table_tolerance = 0.05;
+
+namespace detail {
+
+// The guess tables (in units of dt) of an oscillator with e = restitution that lasts `steps`
+// steps (a dt = -ln(e) / steps, omega dt = pi / steps), by bisection: 2 x 257 x `iterations`
+// evaluations of exp and sin (100: about 1 ms; 40 leave a guess within 1e-12 of its root).
+inline void build_guess_tables(double restitution, double steps, double *exit_guess, double *entry_guess,
+                               int iterations = 100)
+{
+  const double a = restitution > 0.0 ? -std::log(restitution) / steps : 0.0, w = pi / steps;
+  for (int k = 0; k <= ContactStep::table_size; ++k) {
+    const double x = static_cast<double>(k) / ContactStep::table_size;
+    const double r = x < 1.0 ? x / (1.0 - x) : 1e300;
+    double lo = 0.0, hi = 1.0, lo2 = 0.0, hi2 = 1.0;
+    for (int it = 0; it < iterations; ++it) {
+      const double m = 0.5 * (lo + hi), m2 = 0.5 * (lo2 + hi2);
+      // exit: exp(-a s) w (1 - s) - r sin(w s), falling from > 0 at s = 0
+      (std::exp(-a * m) * w * (1.0 - m) - r * std::sin(w * m) > 0.0 ? lo : hi) = m;
+      // entry: exp(-a s) sin(w s) / w - r (1 - s), rising from < 0 at s = 0
+      (std::exp(-a * m2) * std::sin(w * m2) / w - r * (1.0 - m2) < 0.0 ? lo2 : hi2) = m2;
+    }
+    exit_guess[k] = 0.5 * (lo + hi);
+    entry_guess[k] = 0.5 * (lo2 + hi2);
+  }
+}
+
+// The tables of an oscillator (e, steps), built once and kept for the process (a few kB each):
+// exactly for the steps per contact of a run's set-up; for a time step changed within a run
+// (adaptive time stepping, which may change it at every step) for the band of steps per contact
+// (table_tolerance wide, on a logarithmic scale) it falls in.
+struct GuessTables {
+  double steps;
+  double exit_guess[ContactStep::table_size + 1], entry_guess[ContactStep::table_size + 1];
+};
+
+inline const GuessTables &guess_tables(double restitution, double steps, bool banded)
+{
+  static std::map<std::pair<double, double>, GuessTables> cache;
+  if (banded) {
+    const double band = std::log1p(table_tolerance);
+    steps = std::exp(std::lround(std::log(steps) / band) * band);
+  }
+  auto found = cache.find({restitution, steps});
+  if (found != cache.end()) return found->second;
+  GuessTables &t = cache[{restitution, steps}];
+  t.steps = steps;
+  build_guess_tables(restitution, steps, t.exit_guess, t.entry_guess, banded ? 40 : 100);
+  return t;
+}
+
+}    // namespace detail
+
+// reuse: the contact's constants before a change of the time step within a run (reset_dt).
+// Its guess tables are kept where the steps per contact changed by less than table_tolerance,
+// or those of the band taken otherwise: a guess a few per cent off costs Newton an iteration or
+// two in the steps where a contact starts or ends, where building tables at each change would
+// cost ~1 ms. Without reuse (a run's set-up) the tables are exact for these steps.
+inline ContactStep make_contact_step(const SpringDashpot &sd, double dt, const ContactStep *reuse = nullptr)
 {
   ContactStep cs;
   cs.dt = dt;
   cs.inv_dt = 1.0 / dt;
   // Same e_d = exp(-a t_c) with t_c = pi / omega, at no less than 1.5 steps per contact.
   cs.contact_time = resolved_contact_time(contact_duration_of(sd), dt);
-  const OscillatorStep o = oscillator_step(restitution_of(sd), cs.contact_time, dt);
+  const double restitution = restitution_of(sd);
+  const OscillatorStep o = oscillator_step(restitution, cs.contact_time, dt);
   cs.omega = o.omega;
   cs.decay_rate = o.decay_rate;
   cs.E = o.E, cs.C = o.C, cs.S = o.S;
   cs.stiffness_step = o.stiffness_step;
   cs.damping_step = o.damping_step;
-  // Tabulate the exit and entry times (bisection: once per type pair and time step).
-  const double a = cs.decay_rate, w = cs.omega;
-  for (int k = 0; k <= ContactStep::table_size; ++k) {
-    const double x = static_cast<double>(k) / ContactStep::table_size;
-    const double r = x < 1.0 ? x / (1.0 - x) : 1e300;
-    double lo = 0.0, hi = dt, lo2 = 0.0, hi2 = dt;
-    for (int it = 0; it < 100; ++it) {
-      const double m = 0.5 * (lo + hi), m2 = 0.5 * (lo2 + hi2);
-      // exit: exp(-a s) w (dt - s) - r sin(w s), falling from > 0 at s = 0
-      (std::exp(-a * m) * w * (dt - m) - r * std::sin(w * m) > 0.0 ? lo : hi) = m;
-      // entry: exp(-a s) sin(w s) / w - r (dt - s), rising from < 0 at s = 0
-      (std::exp(-a * m2) * std::sin(w * m2) / w - r * (dt - m2) < 0.0 ? lo2 : hi2) = m2;
-    }
-    cs.exit_guess[k] = 0.5 * (lo + hi);
-    cs.entry_guess[k] = 0.5 * (lo2 + hi2);
+  const double steps = cs.contact_time / dt;
+  cs.table_restitution = restitution;
+  if (reuse && reuse->table_restitution == restitution &&
+      std::fabs(steps / reuse->table_steps - 1.0) <= table_tolerance) {
+    cs.exit_guess = reuse->exit_guess, cs.entry_guess = reuse->entry_guess, cs.table_steps = reuse->table_steps;
+    return cs;
   }
+  const detail::GuessTables &t = detail::guess_tables(restitution, steps, reuse != nullptr);
+  cs.exit_guess = t.exit_guess, cs.entry_guess = t.entry_guess, cs.table_steps = t.steps;
   return cs;
 }
 
@@ -253,7 +311,7 @@ __attribute__((noinline)) inline double contact_acceleration(const ContactStep &
       };
       double evaluated_at;
       const double s = detail::falling_root(
-          excess, 0.0, dt, detail::table_lookup(cs.exit_guess, ContactStep::table_size, g1 / -g0), evaluated_at);
+          excess, 0.0, dt, dt * detail::table_lookup(cs.exit_guess, ContactStep::table_size, g1 / -g0), evaluated_at);
       const double v_exit = s < 0.5 * dt ? g1 / (dt - s) : -std::exp(-a * s) * w * g0 / std::sin(w * s);
       return (v_exit - u) / dt;
     }
@@ -279,8 +337,8 @@ __attribute__((noinline)) inline double contact_acceleration(const ContactStep &
     const double guess_ratio = loss ? -g1 * -u / (loss->start_speed(-u) * g0) : -g1 / g0;
     double evaluated_at;
     const double s = detail::falling_root(
-        mismatch, 0.0, dt, g0 > 0.0 ? detail::table_lookup(cs.entry_guess, ContactStep::table_size, guess_ratio) : dt,
-        evaluated_at);
+        mismatch, 0.0, dt,
+        g0 > 0.0 ? dt * detail::table_lookup(cs.entry_guess, ContactStep::table_size, guess_ratio) : dt, evaluated_at);
     {    // move decay_s, sin_s, cos_s from the last evaluated point to s (first order)
       const double shift = s - evaluated_at;
       decay_s *= 1.0 - a * shift;

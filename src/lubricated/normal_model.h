@@ -45,11 +45,13 @@ struct NormalModel {
   double reach(double radius) const { return lubrication.reach(radius); }
 };
 
-inline NormalModel make_normal_model(const Coefficients &c, Partner partner, double dt)
+// reuse: the model for the last time step (its guess tables may serve, contact_step.h).
+inline NormalModel make_normal_model(const Coefficients &c, Partner partner, double dt,
+                                     const NormalModel *reuse = nullptr)
 {
   NormalModel m;
   m.contact = spring_dashpot_from_restitution(c.e_dry, c.contact_time(dt));
-  m.step = make_contact_step(m.contact, dt);
+  m.step = make_contact_step(m.contact, dt, reuse ? &reuse->step : nullptr);
   m.exact = c.exact_contact;
   m.lubrication =
       make_lubrication(partner, c.viscosity, c.eps_activation, c.grid_spacing, c.eps_saturation, c.eps_release);

@@ -170,6 +170,8 @@ void PairLubricatedSpringDashpot::init_style()
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++) {
       if (!setflag[i][j]) continue;
+      lub::settle_contact_time(coeffs[index(i, j)], update->dt);
+      coeffs[index(j, i)] = coeffs[index(i, j)];
       const lub::Coefficients &c = coeffs[index(i, j)];
       const lub::SetupCheck check = lub::check_setup(c, lub::Partner::particle, update->dt);
       if (!check.error.empty()) error->all(FLERR, "{} types {} {}: {}", STYLE, i, j, check.error);
@@ -306,7 +308,7 @@ void PairLubricatedSpringDashpot::update_models()
     for (int j = i; j <= n; j++)
       if (setflag[i][j]) {
         models[index(i, j)] = models[index(j, i)] =
-            lub::make_contact_model(coeffs[index(i, j)], lub::Partner::particle, update->dt);
+            lub::make_contact_model(coeffs[index(i, j)], lub::Partner::particle, update->dt, &models[index(i, j)]);
         set_network_loads(i, j);
       }
 }
@@ -327,7 +329,8 @@ void PairLubricatedSpringDashpot::set_network_loads(int i, int j)
   network_check = network_check || bound > lub::network_check_load;
 }
 
-// k = m_e (pi^2 + ln^2 e_d) / (N_c dt)^2 follows the time step when N_c is given.
+// A new time step: the per-step constants follow it; k and c stay (t_c settled at the first run,
+// lubricated/coefficients.h settle_contact_time).
 void PairLubricatedSpringDashpot::reset_dt()
 {
   update_models();
@@ -342,7 +345,9 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
   if (inverse_mass_on && (neighbor->ago == 0 || update->setupflag)) update_inverse_mass();
   if (!film_budget)
     film_budget_now = false;
-  else if (neighbor->ago == 0 || update->setupflag || update->dt != film_bound_dt)
+  else if (neighbor->ago == 0 || update->setupflag || update->dt > film_bound_dt)
+    // The bounds grow with dt (film_budget.h): those of a larger step hold for a smaller one,
+    // so adaptive time stepping recomputes them only where dt grows past theirs.
     film_budget_now = films_can_exceed_budget();
   if (film_budget_now) begin_film_budget();
   // A scene pays only for what it uses: one loop per combination.

@@ -211,9 +211,9 @@ TEST(RandomInputs, AcceptedCoefficientsGiveFiniteModelConstants)
       ASSERT_TRUE(cs.E >= 0.0 && cs.E <= 1.0 && std::isfinite(cs.C) && std::isfinite(cs.S)) << where.str();
       ASSERT_TRUE(std::isfinite(cs.stiffness_step) && cs.stiffness_step > 0.0) << where.str();
       ASSERT_TRUE(std::isfinite(cs.damping_step) && cs.damping_step >= 0.0) << where.str();
-      for (int k = 0; k <= ContactStep::table_size; ++k)
-        ASSERT_TRUE(cs.exit_guess[k] >= 0.0 && cs.exit_guess[k] <= dt && cs.entry_guess[k] >= 0.0 &&
-                    cs.entry_guess[k] <= dt)
+      for (int k = 0; k <= ContactStep::table_size; ++k)    // guesses in units of dt, within the step
+        ASSERT_TRUE(cs.exit_guess[k] >= 0.0 && cs.exit_guess[k] <= 1.0 && cs.entry_guess[k] >= 0.0 &&
+                    cs.entry_guess[k] <= 1.0)
             << where.str();
       // The contact keeps e_d (exact for N_c >= 1.5; at most 1e-5 off at N_c = 1e6).
       const double e = restitution_of(sd);
