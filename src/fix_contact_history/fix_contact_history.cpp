@@ -70,10 +70,14 @@ void FixContactHistory::min_post_neighbor()
 {
   map_to_list();
 }
-// Between runs (write_restart, write_data, a changed group) the per-atom records are the truth.
+// Between runs (write_restart, write_data, a changed group) the per-atom records are the truth:
+// they migrate with the atoms that write_restart, write_data or the next set-up move and
+// reorder, while the list and its flat arrays go stale; so nothing is stored from them again
+// until the next set-up has mapped the records onto its new list.
 void FixContactHistory::post_run()
 {
   store_from_list();
+  mapped = false;
 }
 
 void FixContactHistory::add(int i, tagint other, const double *v, double sign)

@@ -45,6 +45,7 @@ FixStepVelocity::~FixStepVelocity()
 {
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(kick);
   memory->destroy(vhalf);
   memory->destroy(whalf);
 }
@@ -67,35 +68,39 @@ bool FixStepVelocity::integrated_by_nve_sphere() const
   return any;
 }
 
-void FixStepVelocity::half_step(int i, double *v_half, double *w_half) const
+// The last half kick of owned atom i, dt/2 f/m and dt/2 torque / (2/5 m r^2), kept at the end
+// of a run while atom->f and atom->torque still hold the last step's (commands between runs may
+// migrate or reorder atoms; the forces do not travel with them, the kicks do).
+void FixStepVelocity::store_kick(int i)
 {
   const double dtf = 0.5 * step_dt * force->ftm2v, m = atom->rmass[i], r = atom->radius[i];
-  const double *v = atom->v[i], *f = atom->f[i];
+  const double *f = atom->f[i];
   for (int d = 0; d < 3; d++)
-    v_half[d] = v[d] - dtf * f[d] / m;
+    kick[i][d] = dtf * f[d] / m;
   if (!(atom->omega_flag && atom->torque_flag)) return;
-  const double *w = atom->omega[i], *t = atom->torque[i];
+  const double *t = atom->torque[i];
   const double dtw = dtf / (0.4 * m * r * r);
   for (int d = 0; d < 3; d++)
-    w_half[d] = w[d] - dtw * t[d];
+    kick[i][3 + d] = dtw * t[d];
 }
 
-// Before the set-up clears the forces: the last step's velocities of the owned atoms.
 void FixStepVelocity::setup_pre_exchange()
 {
   continuing = continuable && update->whichflag == 1 && update->dt == step_dt && integrated_by_nve_sphere();
-  if (restored) {    // from the restart file, computed when it was written
-    restored = false;
-    return;
-  }
-  if (!continuing) return;
-  for (int i = 0; i < atom->nlocal; i++)
-    half_step(i, vhalf[i], whalf[i]);
 }
 
+// After the set-up's migration: the last step's velocities v - kick of the owned atoms
+// (velocities set between runs included; an atom created since has no kick), then the ghosts'.
 void FixStepVelocity::setup_post_neighbor()
 {
-  if (continuing) comm->forward_comm(this);
+  if (!continuing) return;
+  const bool spins = atom->omega_flag;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int d = 0; d < 3; d++) {
+      vhalf[i][d] = atom->v[i][d] - kick[i][d];
+      whalf[i][d] = spins ? atom->omega[i][d] - kick[i][3 + d] : 0.0;
+    }
+  comm->forward_comm(this);
 }
 
 // A run that took steps of the velocity Verlet leaves a state the next set-up can continue;
@@ -108,38 +113,42 @@ void FixStepVelocity::post_run()
   } else if (update->ntimestep > update->beginstep) {
     continuable = integrated_by_nve_sphere();
     step_dt = update->dt;
+    if (continuable)
+      for (int i = 0; i < atom->nlocal; i++)
+        store_kick(i);
   }
 }
 
 void FixStepVelocity::grow_arrays(int nmax)
 {
+  memory->grow(kick, nmax, VALUES, "lubricated/step_velocity:kick");
   memory->grow(vhalf, nmax, 3, "lubricated/step_velocity:v");
   memory->grow(whalf, nmax, 3, "lubricated/step_velocity:omega");
 }
 
 void FixStepVelocity::copy_arrays(int i, int j, int /*delflag*/)
 {
-  for (int d = 0; d < 3; d++)
-    vhalf[j][d] = vhalf[i][d], whalf[j][d] = whalf[i][d];
+  for (int k = 0; k < VALUES; k++)
+    kick[j][k] = kick[i][k];
 }
 
 void FixStepVelocity::set_arrays(int i)
 {
-  for (int d = 0; d < 3; d++)
-    vhalf[i][d] = whalf[i][d] = 0.0;
+  for (int k = 0; k < VALUES; k++)
+    kick[i][k] = 0.0;
 }
 
 int FixStepVelocity::pack_exchange(int i, double *buf)
 {
-  for (int d = 0; d < 3; d++)
-    buf[d] = vhalf[i][d], buf[3 + d] = whalf[i][d];
+  for (int k = 0; k < VALUES; k++)
+    buf[k] = kick[i][k];
   return VALUES;
 }
 
 int FixStepVelocity::unpack_exchange(int nlocal, double *buf)
 {
-  for (int d = 0; d < 3; d++)
-    vhalf[nlocal][d] = buf[d], whalf[nlocal][d] = buf[3 + d];
+  for (int k = 0; k < VALUES; k++)
+    kick[nlocal][k] = buf[k];
   return VALUES;
 }
 
@@ -167,16 +176,11 @@ void FixStepVelocity::unpack_forward_comm(int n, int first, double *buf)
   }
 }
 
-// Written between runs, where atom->f still holds the last step's forces.
 int FixStepVelocity::pack_restart(int i, double *buf)
 {
   buf[0] = VALUES + 1;
-  if (continuable) {
-    half_step(i, buf + 1, buf + 4);
-  } else {
-    for (int k = 1; k <= VALUES; k++)
-      buf[k] = 0.0;
-  }
+  for (int k = 0; k < VALUES; k++)
+    buf[k + 1] = kick[i][k];
   return VALUES + 1;
 }
 
@@ -186,8 +190,8 @@ void FixStepVelocity::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int k = 0; k < nth; k++)
     m += static_cast<int>(extra[nlocal][m]);
-  for (int d = 0; d < 3; d++)
-    vhalf[nlocal][d] = extra[nlocal][m + 1 + d], whalf[nlocal][d] = extra[nlocal][m + 4 + d];
+  for (int k = 0; k < VALUES; k++)
+    kick[nlocal][k] = extra[nlocal][m + 1 + k];
 }
 
 int FixStepVelocity::size_restart(int /*i*/)
@@ -214,10 +218,9 @@ void FixStepVelocity::restart(char *buf)
   const auto *data = reinterpret_cast<const double *>(buf);
   continuable = data[0] != 0.0;
   step_dt = data[1];
-  restored = continuable;
 }
 
 double FixStepVelocity::memory_usage()
 {
-  return 2.0 * atom->nmax * 3 * sizeof(double);
+  return 4.0 * atom->nmax * 3 * sizeof(double);
 }

@@ -5,11 +5,12 @@
    A step evaluates the contacts with the velocities of the last step, velocity Verlet's
    v^(n-1/2) (doc/model.rst, "Time integration"); the set-up of a run has only the full-step
    v^n = v^(n-1/2) + dt/2 f^n / m. Where the last run ended with a step of fix nve/sphere,
-   f^n is still in atom->f when the next run's set-up begins, so this fix restores
-   v^(n-1/2) and omega^(n-1/2) there (setup_pre_exchange, before the forces are cleared), and
+   this fix restores v^(n-1/2) and omega^(n-1/2) at the next run's set-up, and
    the set-up evaluates as the step did: the same forces, so a split run, `run 0` and a
-   restart continue as the uninterrupted run. The velocities travel with migrating atoms, to
-   ghosts, and into restart files (computed when the file is written).
+   restart continue as the uninterrupted run. The last half kicks are kept at the end of each run
+   that took steps (post_run, while the forces are the last step's); they travel with migrating
+   atoms and into restart files, and the set-up computes v - kick after its migration (for the
+   ghosts too).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_STEP_VELOCITY_H
@@ -57,13 +58,13 @@ class FixStepVelocity : public Fix {
   double **spin() { return whalf; }
 
  protected:
-  double **vhalf = nullptr, **whalf = nullptr;
-  bool continuable = false;    // the last run ended with a step of fix nve/sphere
-  bool continuing = false;     // this set-up continues it
-  bool restored = false;       // the velocities came from a restart file
-  double step_dt = 0.0;        // the time step of those steps
+  double **kick = nullptr;                        // per atom: last half kick of v and omega
+  double **vhalf = nullptr, **whalf = nullptr;    // owned and ghost: the set-up's velocities
+  bool continuable = false;                       // the last run ended with a step of fix nve/sphere
+  bool continuing = false;                        // this set-up continues it
+  double step_dt = 0.0;                           // the time step of those steps
   bool integrated_by_nve_sphere() const;
-  void half_step(int i, double *v_half, double *w_half) const;
+  void store_kick(int i);
 };
 
 }    // namespace LAMMPS_NS

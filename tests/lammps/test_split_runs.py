@@ -87,3 +87,26 @@ def test_restart_in_the_middle_of_the_collisions_continues_as_one_run(lmp, nproc
     restarted = run(lmp, "plugin load ${plugin}\nread_restart mid.restart\ncomm_modify vel yes\n" +
                     "\n".join(fixes) + "\nrun 900\n", nprocs, name="in.restart")
     assert_same(single, restarted, rel=1e-12)
+
+
+@pytest.mark.parametrize("nprocs", [1, 2, 4])
+def test_dense_frictional_bed_restarts_as_one_run(lmp, nprocs):
+    """The 256-sphere fcc bed (every neighbour in overlap, periodic in all directions: contacts
+    across every rank and periodic boundary), wet, with friction and rolling: write_restart at
+    step 150 within the run sequence, or write_data there (both migrate and reorder atoms between
+    the runs: the last half kicks and the contact records travel with them, the forces and the
+    neighbor list do not; before, the friction history was stored again from the stale list),
+    and a new process reading the restart file: all as the uninterrupted run to 1e-12."""
+    env = dense_scenes.OVERSUBSCRIBED if nprocs > 2 else None
+    scene = dense_scenes.fcc(1e-3, 1e-6, steps=400, gap_ratio=-0.002, extra="friction 0.3 rolling 0.02",
+                             loop="geom")
+    single = lmp(scene, nprocs=nprocs, env=env)["final"]
+    data = lmp(dense_scenes.split(scene, "run 150", "write_data mid.data", "run 250"), nprocs=nprocs,
+               env=env)["final"]
+    split = lmp(dense_scenes.split(scene, "run 150", "write_restart mid.restart", "run 250"), nprocs=nprocs,
+                env=env)["final"]
+    restarted = lmp(dense_scenes.restarted(1e-6, 250), nprocs=nprocs, env=env, name="in.restart")["final"]
+    assert dense_scenes.ranks(lmp.log) == {nprocs}
+    for final in (data, split, restarted):
+        assert final[1] == 256
+        assert final[0] == pytest.approx(single[0], rel=1e-12)
