@@ -261,7 +261,6 @@ void FixWallLubrication::compute_walls(bool defer_films)
   for (double &s : local_sums)
     s = 0.0;
   sums_reduced = false;
-  bigint behind_count = 0;
   films_pending = defer_films = defer_films && model.normal.lubrication.active();
   shear_pending = defer_films && model.tangential.film_active();
   if (defer_films) {
@@ -328,10 +327,8 @@ void FixWallLubrication::compute_walls(bool defer_films)
       // This wall's friction history of the atom (elongation x y z, touched); out of reach, forgotten.
       double *h = history ? history[i] + (side == 1 ? 0 : HISTORY_PER_WALL) : nullptr;
       // A centre behind the wall (a wall placed through or beyond the atoms) is not in contact:
-      // the overlap would exceed a radius and launch the atom (counted for a warning).
-      const bool behind = gap < -r;
-      behind_count += behind;
-      if (!behind && model.normal.acts(gap, r, u_n))
+      // the overlap would exceed a radius and launch the atom (warn_behind counts them).
+      if (gap >= -r && model.normal.acts(gap, r, u_n))
         wall_contact(i, side, gap, u_n, mass, h);
       else if (h && h[3] != 0.0)
         for (int k = 0; k < HISTORY_PER_WALL; k++)
@@ -343,7 +340,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
   if (!contact_mass.active()) {
     for (int i = 0; i < nlocal; i++)
       if (mask[i] & groupbit) walls_of_atom(i, rmass[i]);
-    warn_behind(behind_count);
+    warn_behind();
     return;
   }
   // Atoms change index only where the lists are rebuilt (or a run starts).
@@ -353,14 +350,16 @@ void FixWallLubrication::compute_walls(bool defer_films)
   }
   for (int i = 0; i < nlocal; i++)
     if ((mask[i] & groupbit) && inverse_mass[i] > 0.0) walls_of_atom(i, 1.0 / inverse_mass[i]);
-  warn_behind(behind_count);
+  warn_behind();
 }
 
 // Once per run set-up: atoms whose centres lie behind a wall are left alone by it.
-void FixWallLubrication::warn_behind(bigint count)
+void FixWallLubrication::warn_behind()
 {
   if (!update->setupflag) return;
-  bigint total = 0;
+  bigint count = 0, total = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) count += (has_lo && atom->x[i][axis] < lo) + (has_hi && atom->x[i][axis] > hi);
   MPI_Allreduce(&count, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (total > 0 && comm->me == 0)
     error->warning(FLERR,

@@ -82,7 +82,7 @@ class FixWallLubrication : public Fix {
   ContactMass contact_mass;
   std::vector<double> inverse_mass;
   void compute_walls(bool defer_films);
-  void warn_behind(bigint count);
+  void warn_behind();
   void apply_films();
 };
 

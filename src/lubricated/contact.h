@@ -117,14 +117,15 @@ contact_forces(const ContactModel &m, const ContactPoint &p, HistorySlot &histor
   if (history.elongation) {
     double *h = history.elongation;
     if (tm.contact_active() && tangential_in_contact(p.gap)) {
+      // In a set-up the stored elongation acts, not lengthened, and nothing is written.
+      const double fraction = !history.advance  ? 0.0
+                              : history.touched ? 1.0
+                                                : first_contact_fraction(p.gap, p.u_n, tm.dt);
       Vec3 delta{h[0], h[1], h[2]};
+      f = tangential_contact_force(tm, delta, p.n, s, m_t, normal.contact, fraction);
       if (history.advance) {
-        const double fraction = history.touched ? 1.0 : first_contact_fraction(p.gap, p.u_n, tm.dt);
-        f = tangential_contact_force(tm, delta, p.n, s, m_t, normal.contact, fraction);
         h[0] = delta.x, h[1] = delta.y, h[2] = delta.z;
         history.touched = true;
-      } else {    // the stored elongation, not lengthened (a copy: nothing written)
-        f = tangential_contact_force(tm, delta, p.n, s, m_t, normal.contact, 0.0);
       }
     } else if (history.touched && history.advance) {
       history.touched = false;
