@@ -279,14 +279,16 @@ def test_a_long_enough_contact_runs(run, packings):
 def test_likely_unstable_network_is_warned_once_a_run(run):
     """The settling bed at N_c = 2: columns of two contacts per sphere (lower bound 3.15, upper
     5.36): a growing mode is likely, not proven; one WARNING per run, and the bed does not
-    settle (its top stays near 31 d instead of 22.5 d)."""
+    settle: its top stays at least 1 d above the same bed's at N_c = 8 (measured 24.6 d and
+    31 d in two builds that differ by round-off, the growing mode being chaotic; 22.5 d settled)."""
     script = (ROOT / "examples" / "liggghts" / "in.settling_bed").read_text()
-    result = run.lig(script.replace("variable N_c     equal 8", "variable N_c     equal 2"),
-                     variables={"steps": 20000, "settled": 2000})
+    variables = {"steps": 20000, "settled": 2000}
+    settled = run.lig(script, variables=variables)["top"]
+    result = run.lig(script.replace("variable N_c     equal 8", "variable N_c     equal 2"), variables=variables)
     warnings = [line for line in run.log.splitlines() if "likely unstable" in line]
     assert len(warnings) == 2
     assert "lubricatedContactSteps = 2" in warnings[0] and "use lubricatedContactSteps >=" in warnings[0]
-    assert result["top"] > 25.0
+    assert result["top"] > settled + 1.0
 
 
 @pytest.mark.parametrize("nprocs", [1, 2])
