@@ -369,55 +369,6 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
-int PairLubricatedSpringDashpot::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
-{
-  if (comm_what == COMM_NETWORK) {
-    constexpr int nv = lub::network_values;
-    for (int k = 0; k < n; k++)
-      std::copy_n(&network_sums[nv * list[k]], nv, buf + nv * k);
-    return nv * n;
-  }
-  const double *values = comm_what == COMM_MASS ? inverse_mass.data() : scale_of_atom.data();
-  for (int k = 0; k < n; k++)
-    buf[k] = values[list[k]];
-  return n;
-}
-
-void PairLubricatedSpringDashpot::unpack_forward_comm(int n, int first, double *buf)
-{
-  if (comm_what == COMM_NETWORK) {
-    std::copy_n(buf, lub::network_values * n, &network_sums[lub::network_values * first]);
-    return;
-  }
-  double *values = comm_what == COMM_MASS ? inverse_mass.data() : scale_of_atom.data();
-  for (int k = 0; k < n; k++)
-    values[first + k] = buf[k];
-}
-
-int PairLubricatedSpringDashpot::pack_reverse_comm(int n, int first, double *buf)
-{
-  if (comm_what == COMM_NETWORK) {
-    std::copy_n(&network_sums[lub::network_values * first], lub::network_values * n, buf);
-    return lub::network_values * n;
-  }
-  for (int k = 0; k < n; k++)
-    buf[k] = load_of_atom[first + k];
-  return n;
-}
-
-void PairLubricatedSpringDashpot::unpack_reverse_comm(int n, int *list, double *buf)
-{
-  if (comm_what == COMM_NETWORK) {
-    constexpr int nv = lub::network_values;
-    for (int k = 0; k < n; k++)
-      for (int q = 0; q < nv; q++)
-        network_sums[nv * list[k] + q] += buf[nv * k + q];
-    return;
-  }
-  for (int k = 0; k < n; k++)
-    load_of_atom[list[k]] += buf[k];
-}
-
 double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, double rsq, double /*factor_coul*/,
                                            double /*factor_lj*/, double &fforce)
 {

@@ -1,6 +1,7 @@
 /* ----------------------------------------------------------------------
    pair_style lubricated/springdashpot: the many-body parts of a dense bed, the film budget
-   (lubricated/film_budget.h) and the contact-network check (lubricated/contact_network.h)
+   (lubricated/film_budget.h), the contact-network check (lubricated/contact_network.h) and
+   the communication of their per-atom sums
 ------------------------------------------------------------------------- */
 
 #include "pair_lubricated_springdashpot.h"
@@ -287,4 +288,54 @@ void PairLubricatedSpringDashpot::check_contact_network(int ncandidate)
   const std::string message = lub::network_message(STYLE, coeffs[index(found.type_i, found.type_j)], update->dt, found);
   if (found.unstable) error->all(FLERR, message);
   if (comm->me == 0) error->warning(FLERR, message);
+}
+
+// Communication of the bed's per-atom sums (film loads and scales, inverse masses, network sums).
+int PairLubricatedSpringDashpot::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  if (comm_what == COMM_NETWORK) {
+    constexpr int nv = lub::network_values;
+    for (int k = 0; k < n; k++)
+      std::copy_n(&network_sums[nv * list[k]], nv, buf + nv * k);
+    return nv * n;
+  }
+  const double *values = comm_what == COMM_MASS ? inverse_mass.data() : scale_of_atom.data();
+  for (int k = 0; k < n; k++)
+    buf[k] = values[list[k]];
+  return n;
+}
+
+void PairLubricatedSpringDashpot::unpack_forward_comm(int n, int first, double *buf)
+{
+  if (comm_what == COMM_NETWORK) {
+    std::copy_n(buf, lub::network_values * n, &network_sums[lub::network_values * first]);
+    return;
+  }
+  double *values = comm_what == COMM_MASS ? inverse_mass.data() : scale_of_atom.data();
+  for (int k = 0; k < n; k++)
+    values[first + k] = buf[k];
+}
+
+int PairLubricatedSpringDashpot::pack_reverse_comm(int n, int first, double *buf)
+{
+  if (comm_what == COMM_NETWORK) {
+    std::copy_n(&network_sums[lub::network_values * first], lub::network_values * n, buf);
+    return lub::network_values * n;
+  }
+  for (int k = 0; k < n; k++)
+    buf[k] = load_of_atom[first + k];
+  return n;
+}
+
+void PairLubricatedSpringDashpot::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  if (comm_what == COMM_NETWORK) {
+    constexpr int nv = lub::network_values;
+    for (int k = 0; k < n; k++)
+      for (int q = 0; q < nv; q++)
+        network_sums[nv * list[k] + q] += buf[nv * k + q];
+    return;
+  }
+  for (int k = 0; k < n; k++)
+    load_of_atom[list[k]] += buf[k];
 }
