@@ -48,9 +48,9 @@ struct ContactPoint {
 
 // The contact's friction history (tangential.h), where the engine keeps it: the elongation
 // delta (3 values; nullptr where none is kept: no friction force) and whether the contact
-// touched at the last step. Both are updated in place; a contact out of overlap forgets its
-// elongation. (The flag is a copy, not a pointer into the engine's char flags: a store
-// through a char pointer may alias anything and costs reloads in the pair loop.)
+// touched at the last step. The elongation is updated in place, the flag here (the engine
+// stores it back: a store through a pointer into its char flags may alias anything and costs
+// reloads in the pair loop); a contact out of overlap forgets its elongation.
 struct HistorySlot {
   double *elongation = nullptr;
   bool touched = false;

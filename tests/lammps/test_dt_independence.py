@@ -60,7 +60,7 @@ CALIBRATED_STOKES = [20, 30, 50, 1000]
 def test_calibrated_contact_follows_the_law_for_every_time_step(lmp, scene, stokes):
     mu = scenes.viscosity_for_stokes(stokes)
     build = scenes.wall_bounce if scene == "wall" else scenes.pair_bounce
-    for tcontact_ru in (0.04, None):    # fixed t_c, then N_c = 8 (t_c follows dt)
+    for tcontact_ru in (0.04, None):    # fixed t_c, then N_c = 8 at each scene's own dt
         ratios = [lmp(build(E_DRY, dt_ru=dt, mu=mu, tcontact_ru=tcontact_ru, extra="legendre 35"))["e"]
                   / E_DRY for dt in DT_RU]
         for ratio in ratios:
