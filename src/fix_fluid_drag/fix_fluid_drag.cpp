@@ -286,7 +286,7 @@ void FixFluidDrag::post_force(int /*vflag*/)
 
   // A set-up that continues the last run drags with the velocities of its last step, as that
   // step did (fix_step_velocity.h, kept where the pair style or a wall fix of this plugin is).
-  const bool continued = update->setupflag && step_velocity && step_velocity->continues();
+  const bool continued = step_velocity && step_velocity->continues();
   double **x = atom->x, **v = continued ? step_velocity->velocity() : atom->v, **f = atom->f;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *mask = atom->mask;

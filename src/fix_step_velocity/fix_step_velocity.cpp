@@ -52,7 +52,7 @@ FixStepVelocity::~FixStepVelocity()
 
 int FixStepVelocity::setmask()
 {
-  return PRE_EXCHANGE | POST_NEIGHBOR;
+  return POST_NEIGHBOR;
 }
 
 // The integrator the reconstruction assumes: fix nve/sphere (v += dt/2 f/m, omega += dt/2
@@ -84,15 +84,12 @@ void FixStepVelocity::store_kick(int i)
     kick[i][3 + d] = dtw * t[d];
 }
 
-void FixStepVelocity::setup_pre_exchange()
-{
-  continuing = continuable && update->whichflag == 1 && update->dt == step_dt && integrated_by_nve_sphere();
-}
-
-// After the set-up's migration: the last step's velocities v - kick of the owned atoms
-// (velocities set between runs included; an atom created since has no kick), then the ghosts'.
+// After the set-up's migration, before any force: whether this set-up continues the last run,
+// and then the last step's velocities v - kick of the owned atoms (velocities set between runs
+// included; an atom created since has no kick), then the ghosts'.
 void FixStepVelocity::setup_post_neighbor()
 {
+  continuing = continuable && update->whichflag == 1 && update->dt == step_dt && integrated_by_nve_sphere();
   if (!continuing) return;
   const bool spins = atom->omega_flag;
   for (int i = 0; i < atom->nlocal; i++)

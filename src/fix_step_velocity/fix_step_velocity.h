@@ -17,6 +17,7 @@
 #define LMP_FIX_STEP_VELOCITY_H
 
 #include "fix.h"
+#include "update.h"
 
 namespace LAMMPS_NS {
 
@@ -30,8 +31,6 @@ class FixStepVelocity : public Fix {
   ~FixStepVelocity() override;
 
   int setmask() override;
-  void pre_exchange() override {}
-  void setup_pre_exchange() override;
   void post_neighbor() override {}
   void setup_post_neighbor() override;
   void post_run() override;
@@ -53,7 +52,7 @@ class FixStepVelocity : public Fix {
 
   // Whether this set-up continues the last run's steps; then the last step's velocities of
   // owned and ghost atoms (nmax x 3, contiguous like atom->v and atom->omega).
-  bool continues() const { return continuing; }
+  bool continues() const { return continuing && update->setupflag; }
   double **velocity() { return vhalf; }
   double **spin() { return whalf; }
 

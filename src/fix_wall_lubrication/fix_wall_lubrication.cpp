@@ -246,7 +246,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
   double **x = atom->x;
   // A set-up that continues the last run evaluates as its last step did, with its velocities
   // (fix_step_velocity.h); not with rigid bodies or immovable atoms.
-  const bool continued = update->setupflag && step_velocity && step_velocity->continues() && !contact_mass.active();
+  const bool continued = step_velocity && step_velocity->continues() && !contact_mass.active();
   double **v = continued ? step_velocity->velocity() : atom->v;
   double **omega = continued ? step_velocity->spin() : atom->omega;
   double **f = atom->f, **torque = atom->torque;

@@ -296,7 +296,7 @@ inline std::string validate_time_step(const Coefficients &c, double dt)
     return "ncontact = " + detail::number(c.n_contact) + " settled t_c = " + detail::number(c.settled_contact_time) +
            " at the first run; the time step " + detail::number(dt) +
            " gives N_c = t_c / dt = " + detail::number(c.steps_per_contact(dt)) +
-           " (allowed: 1 <= N_c <= 1e6; give pair_coeff again)";
+           " (allowed: 1 <= N_c <= 1e6; give ncontact again for the new time step)";
   }
   return "";
 }

@@ -341,7 +341,7 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   // A set-up that continues the last run evaluates as its last step did (fix_step_velocity.h);
   // not with rigid bodies or immovable atoms, whose velocities the reconstruction does not know.
-  continued = update->setupflag && step_velocity && step_velocity->continues() && !inverse_mass_on;
+  continued = step_velocity && step_velocity->continues() && !inverse_mass_on;
   if (inverse_mass_on && (neighbor->ago == 0 || update->setupflag)) update_inverse_mass();
   if (!film_budget)
     film_budget_now = false;

@@ -55,15 +55,27 @@ def test_fix_dt_reset_keeps_the_restitution(lmp, scene):
     assert result["dt_end"] < 0.5 * DT    # the time step did change
 
 
+@pytest.mark.parametrize("nprocs", [1, 2])
 @pytest.mark.parametrize("wet", [False, True], ids=["dry", "wet"])
-def test_a_compressed_bed_given_a_quarter_time_step_gains_no_energy(lmp, wet):
+def test_a_compressed_bed_given_a_quarter_time_step_gains_no_energy(lmp, wet, nprocs):
     """256 spheres on an fcc lattice, every neighbour in overlap (0.2 % of 2R) and moving; after
     100 steps the time step becomes dt/4 for 800 more: the energy (kinetic, rotational, springs)
     never rises by more than round-off (before: the springs stiffened 16-fold)."""
     scene = dense_scenes.fcc(1.0 if wet else 0.0, 1e-6, steps=900, every=10, gap_ratio=-0.002)
-    energy, atoms = dense_scenes.energies(lmp(dense_scenes.split(scene, "run 100", "timestep 2.5e-7", "run 800"))
-                                          and lmp.log)
+    lmp(dense_scenes.split(scene, "run 100", "timestep 2.5e-7", "run 800"), nprocs=nprocs)
+    energy, atoms = dense_scenes.energies(lmp.log)
+    assert dense_scenes.ranks(lmp.log) == {nprocs}
     assert len(energy) >= 90 and set(atoms) == {256}
     rises = [(b - a) / energy[0] for a, b in zip(energy, energy[1:])]
     assert max(rises) <= 1e-12, f"energy rose by {max(rises):.3g} E0"
     assert energy[-1] < energy[0]
+
+
+def test_a_time_step_beyond_the_settled_contact_stops_with_an_error(lmp):
+    """ncontact 8 settles t_c = 8 dt at the first run; a later step of 100 dt would give
+    N_c = 0.08: an ERROR that names ncontact, the settled t_c and the allowed range."""
+    script = bounce_with_a_new_time_step(10, 100.0)
+    lmp(script, check=False)
+    error = next((line for line in lmp.log.splitlines() if "ERROR" in line), "")
+    assert "ncontact = 8 settled t_c = 0.0004 at the first run" in error, error
+    assert "N_c = t_c / dt = 0.08" in error and "1 <= N_c <= 1e6" in error and "give ncontact again" in error
