@@ -52,8 +52,7 @@ FixLubricatedStepVelocity *FixLubricatedStepVelocity::find_or_create(LAMMPS_NS::
   return static_cast<FixLubricatedStepVelocity *>(modify->fix[index]);
 }
 
-FixLubricatedStepVelocity::FixLubricatedStepVelocity(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg)
+FixLubricatedStepVelocity::FixLubricatedStepVelocity(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
 {
   restart_global = 1;
   restart_peratom = 1;

@@ -57,11 +57,11 @@ class FixLubricatedStepVelocity : public LAMMPS_NS::Fix {
   }
 
  private:
-  double **kick_ = nullptr;    // per atom (owned, and ghosts at a set-up): dt/2 f/m of the last step
-  bool continuable_ = false;   // the last run ended with a step of fix nve/sphere
-  bool continuing_ = false;    // this set-up continues it
-  double step_dt_ = 0.0;       // the time step of that step
-  int integrated_bits_ = 0;    // the groups of the fixes nve/sphere
+  double **kick_ = nullptr;     // per atom (owned, and ghosts at a set-up): dt/2 f/m of the last step
+  bool continuable_ = false;    // the last run ended with a step of fix nve/sphere
+  bool continuing_ = false;     // this set-up continues it
+  double step_dt_ = 0.0;        // the time step of that step
+  int integrated_bits_ = 0;     // the groups of the fixes nve/sphere
   bool integrated_by_nve_sphere();
 };
 

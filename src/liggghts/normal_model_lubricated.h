@@ -122,7 +122,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     const lubricated::NormalModel &model = models_[t];
     const bool continued = step_velocity_->continues();
     const double gap = -sidata.deltan,
-                 u_n = continued ? sidata.vn - step_velocity_->kick_along(sidata.i, partner(sidata), sidata.en) : sidata.vn;
+                 u_n = continued ? sidata.vn - step_velocity_->kick_along(sidata.i, partner(sidata), sidata.en)
+                                 : sidata.vn;
     const double m_e = is_wall_ ? sidata.meff : pair_reduced_mass(sidata.i, sidata.j);
     const double radius = is_wall_ ? sidata.radi : lubricated::film_radius_pair(sidata.radi, sidata.radj).value;
     if (!update->setupflag && gap - u_n * dt_ >= (neighbor->contactDistanceFactor - 1.0) * sidata.radsum)

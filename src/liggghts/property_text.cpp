@@ -35,17 +35,20 @@ bool is_number(const char *text)
   const char *c = text;
   if (*c == '+' || *c == '-') ++c;
   int digits = 0;
-  while (std::isdigit(static_cast<unsigned char>(*c))) ++c, ++digits;
+  while (std::isdigit(static_cast<unsigned char>(*c)))
+    ++c, ++digits;
   if (*c == '.') {
     ++c;
-    while (std::isdigit(static_cast<unsigned char>(*c))) ++c, ++digits;
+    while (std::isdigit(static_cast<unsigned char>(*c)))
+      ++c, ++digits;
   }
   if (digits == 0) return false;
   if (*c == 'e' || *c == 'E') {
     ++c;
     if (*c == '+' || *c == '-') ++c;
     if (!std::isdigit(static_cast<unsigned char>(*c))) return false;
-    while (std::isdigit(static_cast<unsigned char>(*c))) ++c;
+    while (std::isdigit(static_cast<unsigned char>(*c)))
+      ++c;
   }
   return *c == '\0';
 }
@@ -61,16 +64,16 @@ int first_value(const char *kind)
 }    // namespace
 
 extern "C" __attribute__((visibility("default"))) void
-lubricated_checked_property_global(void *self, LAMMPS_NS::LAMMPS *lmp, int narg, char **arg)
-    __asm__(LUBRICATED_PROPERTY_CONSTRUCTOR);
+lubricated_checked_property_global(void *self, LAMMPS_NS::LAMMPS *lmp, int narg,
+                                   char **arg) __asm__(LUBRICATED_PROPERTY_CONSTRUCTOR);
 
 extern "C" void lubricated_checked_property_global(void *self, LAMMPS_NS::LAMMPS *lmp, int narg, char **arg)
 {
   if (narg > 5 && read_by_model(arg[3]))
     for (int k = first_value(arg[4]); k < narg; k++)
       if (!is_number(arg[k]))
-        lmp->error->all(FLERR, ("model lubricated: fix " + std::string(arg[0]) + " property/global " + arg[3] +
-                                ": '" + arg[k] + "' is not a number (expected a value such as 0.9 or 1e-3)")
+        lmp->error->all(FLERR, ("model lubricated: fix " + std::string(arg[0]) + " property/global " + arg[3] + ": '" +
+                                arg[k] + "' is not a number (expected a value such as 0.9 or 1e-3)")
                                    .c_str());
   static const Constructor liggghts_constructor =
       reinterpret_cast<Constructor>(dlsym(RTLD_NEXT, LUBRICATED_PROPERTY_CONSTRUCTOR));
