@@ -29,6 +29,8 @@
 
 #include "coefficients.h"
 #include "contact_step.h"
+#include "inline_exp.h"
+#include "inline_log.h"
 
 #include <algorithm>
 #include <cmath>
@@ -180,6 +182,27 @@ inline Vec3 shear_film_force(const TangentialModel &m, const Vec3 &s, double eps
   const double rate = coefficient * m.dt / tangential_mass;
   const double factor = rate < 1e-6 ? rate * (1.0 - 0.5 * rate) : -std::expm1(-rate);
   return scaled(s, -factor * tangential_mass / m.dt);
+}
+
+// shear_film_force() for a pair apart by more than eps_release R, without branches or calls, for
+// loops the compiler vectorises: the damping d of the force -d s [mass/time], the same to a few
+// units in the last place (log_inline, one_minus_exp_neg_inline); 0 where the tangential mass is
+// 0 (two immovable atoms).
+__attribute__((always_inline)) inline double shear_film_damping_apart(const TangentialModel &m, double eps,
+                                                                      double eps_al, double eps_saturation,
+                                                                      double eps_release, double reduced_radius,
+                                                                      double tangential_mass)
+{
+  // Every operation done for every pair, the result selected (no branch for the compiler to
+  // keep): outside the film the coefficient is 0; a zero mass is replaced by 1 and its damping
+  // multiplied by 0.
+  const double in_film = (eps < eps_al) & (eps > eps_release) ? 1.0 : 0.0;
+  const double movable = tangential_mass > 0.0 ? 1.0 : 0.0;
+  const double mass = tangential_mass + (1.0 - movable);
+  const double coefficient =
+      in_film * m.two_pi_mu * reduced_radius * log_inline(eps_al / std::max(eps, eps_saturation));
+  const double rate = coefficient * m.dt / mass;
+  return movable * one_minus_exp_neg_inline(rate) * mass / m.dt;
 }
 
 }    // namespace lubricated

@@ -212,9 +212,9 @@ void PairLubricatedSpringDashpot::init_style()
   // The vectorised loops need the step velocity in v and exactly integrated normal forces;
   // type pairs with other coefficients are grouped by type pair (vector_forces).
   vector_loops = vector_enabled && !any_tangential && !midpoint;
-  // With friction or rolling but no shear film, the pairs apart over a step feel the normal
-  // film alone: they take the vectorised film loop too.
-  film_loops = vector_enabled && any_tangential && any_wet && !any_shear_film && !midpoint;
+  // With friction or rolling, the pairs apart over a step feel the normal and shear films
+  // alone: they take a vectorised film loop too.
+  film_loops = vector_enabled && any_tangential && any_wet && !midpoint;
   uniform_models = true;
   double first[lub::Coefficients::packed_size], other[lub::Coefficients::packed_size];
   coeffs[index(1, 1)].pack(first);

@@ -70,7 +70,7 @@ class PairLubricatedSpringDashpot : public Pair {
   bool vector_enabled = true;
   bool uniform_models = true;
   bool vector_loops = false;
-  bool film_loops = false;    // friction or rolling without shear film: film-only pairs vectorised
+  bool film_loops = false;    // friction or rolling: the film-only pairs vectorised (normal and shear film)
   std::vector<int> film_i, film_j;
   std::vector<int> group_count, group_keys;    // grouping a chunk by type pair
 
@@ -166,7 +166,8 @@ class PairLubricatedSpringDashpot : public Pair {
   template <bool WET, bool TANGENTIAL>
   __attribute__((always_inline)) inline void evaluate_pair(const PairLoop &loop, int i, int j, int jj);
   __attribute__((always_inline)) inline void forget_history(int i, int jj);
-  template <class Evaluate> void vector_forces(int ncandidate, int nfilm, double **v, Evaluate &evaluate);
+  template <bool TANGENTIAL, class Evaluate>
+  void vector_forces(int ncandidate, int nfilm, double **v, double **omega, Evaluate &evaluate);
 };
 
 }    // namespace LAMMPS_NS

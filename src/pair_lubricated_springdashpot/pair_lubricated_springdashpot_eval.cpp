@@ -47,15 +47,21 @@ static inline bool within_a_step(double rsq, double dv_dot_del, double dt, doubl
 // chunks that stay in the cache between computing and applying the forces; kept entries
 // where a contact starts or ends go through the general loop, evaluate(i, j, jj). Unless one
 // model serves every pair, each chunk is first grouped by type pair (a counting sort).
-template <class Evaluate>
-void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v, Evaluate &evaluate)
+// TANGENTIAL (friction or rolling, and maybe a shear film): only the film-only list, with the
+// shear film (the kept entries go through the general loop).
+template <bool TANGENTIAL, class Evaluate> void
+PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v, double **omega, Evaluate &evaluate)
 {
   if (ncandidate + nfilm == 0) return;
   double **x = atom->x, **f = atom->f;
   const int *type = atom->type;
   const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
-  const vector_pairs::Atoms atoms{x[0], v[0], atom->radius, atom->rmass,
-                                  inverse_mass_on ? inverse_mass.data() : nullptr};
+  const vector_pairs::Atoms atoms{x[0],
+                                  v[0],
+                                  atom->radius,
+                                  atom->rmass,
+                                  inverse_mass_on ? inverse_mass.data() : nullptr,
+                                  TANGENTIAL ? omega[0] : nullptr};
   constexpr int chunk = 256;
   double fpair[chunk], energy[chunk], film[chunk], capacity[chunk];
   int done[chunk], rest[chunk];
@@ -82,7 +88,8 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, doubl
       record_film(pair_i[c], pair_j[c], film[c], capacity[c], nlocal, newton_pair);
   };
   // At most one chunk of pairs of one model.
-  auto film_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
+  auto film_pairs = [&](const lub::ContactModel &contact_model, const int *pair_i, const int *pair_j, int n) {
+    const lub::NormalModel &model = contact_model.normal;
     if (atoms.inverse_mass)
       vector_pairs::film_only_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
     else
@@ -91,7 +98,47 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, doubl
       apply(pair_i[c], pair_j[c], fpair[c], 0.0);
     if (budget) record_films(pair_i, pair_j, n);
   };
-  auto kept_pairs = [&](const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n) {
+  // The same with the shear film (friction or rolling: a shear film may act apart).
+  double shear[6][chunk], slip_sq[chunk], tangential_mass[chunk];
+  const vector_pairs::ShearOut shear_out{shear[0], shear[1], shear[2], shear[3],
+                                         shear[4], shear[5], slip_sq,  tangential_mass};
+  double **torque = atom->torque;
+  const double *radius = atom->radius;
+  auto film_shear_pairs = [&](const lub::ContactModel &model, const int *pair_i, const int *pair_j, int n) {
+    if (atoms.inverse_mass)
+      vector_pairs::film_shear_only_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity, shear_out);
+    else
+      vector_pairs::film_shear_only(atoms, model, pair_i, pair_j, n, fpair, film, capacity, shear_out);
+    for (int c = 0; c < n; c++) {
+      const int i = pair_i[c], j = pair_j[c];
+      const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+      const double fx = delx * fpair[c] + shear[0][c], fy = dely * fpair[c] + shear[1][c],
+                   fz = delz * fpair[c] + shear[2][c];
+      f[i][0] += fx, f[i][1] += fy, f[i][2] += fz;
+      torque[i][0] += radius[i] * shear[3][c], torque[i][1] += radius[i] * shear[4][c],
+          torque[i][2] += radius[i] * shear[5][c];
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= fx, f[j][1] -= fy, f[j][2] -= fz;
+        torque[j][0] += radius[j] * shear[3][c], torque[j][1] += radius[j] * shear[4][c],
+            torque[j][2] += radius[j] * shear[5][c];
+      }
+      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+    }
+    if (!budget) return;
+    for (int c = 0; c < n; c++) {
+      const double share = lub::film_share_of_capacity(film[c], capacity[c], dt);
+      if (!shear_records) {
+        record_film(pair_i[c], pair_j[c], film[c], share, nlocal, newton_pair);
+        continue;
+      }
+      const lub::Vec3 force{shear[0][c], shear[1][c], shear[2][c]};
+      const double shear_share = lub::shear_film_share(lub::dot(force, force), slip_sq[c], tangential_mass[c], dt);
+      this->record_films(pair_i[c], pair_j[c], film[c], force, lub::contact_film_share(share, shear_share), nlocal,
+                         newton_pair);
+    }
+  };
+  auto kept_pairs = [&](const lub::ContactModel &contact_model, const int *pair_i, const int *pair_j, int n) {
+    const lub::NormalModel &model = contact_model.normal;
     if (atoms.inverse_mass)
       vector_pairs::contact_or_film_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
     else
@@ -117,7 +164,7 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, doubl
       const int n = std::min(chunk, count - start);
       const int *pair_i = list_i + start, *pair_j = list_j + start;
       if (uniform_models) {
-        pairs(models[index(1, 1)].normal, pair_i, pair_j, n);
+        pairs(models[index(1, 1)], pair_i, pair_j, n);
         continue;
       }
       group_keys.clear();
@@ -138,12 +185,16 @@ void PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, doubl
       }
       begin = 0;
       for (int k : group_keys) {
-        pairs(models[k].normal, grouped_i + begin, grouped_j + begin, group_count[k] - begin);
+        pairs(models[k], grouped_i + begin, grouped_j + begin, group_count[k] - begin);
         begin = group_count[k];
         group_count[k] = 0;
       }
     }
   };
+  if (TANGENTIAL) {
+    run_list(film_i.data(), film_j.data(), nfilm, film_shear_pairs);
+    return;
+  }
   run_list(film_i.data(), film_j.data(), nfilm, film_pairs);
   run_list(candidate_i.data(), candidate_j.data(), ncandidate, kept_pairs);
 }
@@ -377,12 +428,13 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   {
     evaluate_pair<WET, TANGENTIAL>(loop, i, j, jj);
   };
-  if (SPLIT && !TANGENTIAL) {
-    vector_forces(ncandidate, nfilm, v, evaluate);
+  if constexpr (SPLIT && !TANGENTIAL) {
+    vector_forces<false>(ncandidate, nfilm, v, loop.omega, evaluate);
     return;
   }
-  // With friction or rolling (no shear film): the film-only pairs vectorised, the rest whole.
-  if (SPLIT) vector_forces(0, nfilm, v, evaluate);
+  // With friction or rolling: the film-only pairs (normal and shear film) vectorised, the rest
+  // through the whole contact.
+  if constexpr (SPLIT) vector_forces<true>(0, nfilm, v, loop.omega, evaluate);
   for (int c = 0; c < ncandidate; c++)
     evaluate(candidate_i[c], candidate_j[c], TANGENTIAL ? candidate_jj[c] : 0);
 }

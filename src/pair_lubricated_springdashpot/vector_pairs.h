@@ -10,6 +10,7 @@
 #ifndef LMP_LUBRICATED_VECTOR_PAIRS_H
 #define LMP_LUBRICATED_VECTOR_PAIRS_H
 
+#include "lubricated/contact.h"
 #include "lubricated/film_budget.h"
 #include "lubricated/normal_model.h"
 
@@ -18,9 +19,10 @@ namespace vector_pairs {
 
 // Per-atom data: x and v 3 per atom, contiguous (LAMMPS's x[0], v[0]). inverse_mass: the
 // inverse contact masses (contact_mass.h) where a run has immovable atoms or rigid bodies,
-// else nullptr (m_e from rmass).
+// else nullptr (m_e from rmass). omega (3 per atom): for the shear film only.
 struct Atoms {
   const double *x, *v, *radius, *rmass, *inverse_mass;
+  const double *omega = nullptr;
 };
 
 // The pairs (pair_i[c], pair_j[c]), c < n, all of model `model` (exact integration, a step).
@@ -44,6 +46,20 @@ void film_only_by_inverse(const Atoms &atoms, const lubricated::NormalModel &mod
 void contact_or_film_by_inverse(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
                                 const int *pair_j, int n, double *fpair, double *film, double *capacity, double *energy,
                                 int *done);
+
+// Pairs apart by more than both atoms move in the step, with friction or rolling (which act in
+// contact only) and maybe a shear film: film_only's outputs, and the shear film's force on i
+// (shear_x/y/z; on j the opposite, 0 without a shear film), the torque it makes per unit
+// radius (torque_x/y/z: on i times R_i, on j times R_j), the slip's squared length and the
+// tangential mass, from which the caller takes the shear film's budget share.
+struct ShearOut {
+  double *shear_x, *shear_y, *shear_z, *torque_x, *torque_y, *torque_z, *slip_sq, *tangential_mass;
+};
+void film_shear_only(const Atoms &atoms, const lubricated::ContactModel &model, const int *pair_i, const int *pair_j,
+                     int n, double *fpair, double *film, double *capacity, const ShearOut &shear);
+void film_shear_only_by_inverse(const Atoms &atoms, const lubricated::ContactModel &model, const int *pair_i,
+                                const int *pair_j, int n, double *fpair, double *film, double *capacity,
+                                const ShearOut &shear);
 
 }    // namespace vector_pairs
 }    // namespace LAMMPS_NS

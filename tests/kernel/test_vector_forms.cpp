@@ -1,7 +1,9 @@
 // The branch-free forms the pair style's vectorised loops use (film_force_apart for pairs that
 // stay apart over a step, sustained_contact_force, log_inline): the same forces as
 // normal_force() where they apply, to rounding.
+#include "lubricated/inline_exp.h"
 #include "lubricated/inline_log.h"
+#include "lubricated/contact.h"
 #include "lubricated/normal_model.h"
 
 #include <gtest/gtest.h>
@@ -166,4 +168,40 @@ TEST(SustainedContact, EqualsNormalForceWhereItApplies)
   // Both kinds are drawn: sustained contacts and contacts that start or end within the step.
   EXPECT_GT(sustained_count, 10000);
   EXPECT_GT(other_count, 5000);
+}
+
+TEST(InlineExp, OneMinusExpWithinTwoUlpsOfExpm1)
+{
+  EXPECT_EQ(one_minus_exp_neg_inline(0.0), 0.0);
+  EXPECT_EQ(one_minus_exp_neg_inline(1e300), 1.0);
+  for (double x = 1e-14; x < 800.0; x *= 1.001)
+    EXPECT_LE(ulps(one_minus_exp_neg_inline(x), -std::expm1(-x)), 2.0) << x;
+}
+
+// The shear film of the vectorised film loop against shear_film_force(), over gaps in and out of
+// the film, masses over 12 decades (the step's decay from 1e-12 to 1e6) and a zero mass.
+TEST(ShearFilmApart, EqualsTheShearFilmForce)
+{
+  Draw draw(11);
+  for (int k = 0; k < 20000; k++) {
+    Coefficients c;
+    c.e_dry = 0.9, c.n_contact = 8, c.friction = 0.3;
+    c.viscosity = draw.log_uniform(1e-4, 10.0);
+    c.eps_activation = draw.uniform(0.01, 1.0);
+    const double dt = 1e-5;
+    const TangentialModel m = make_contact_model(c, Partner::particle, dt).tangential;
+    ASSERT_TRUE(m.film_active());
+    const double eps1 = 1e-3, eps2 = -1e-2, radius = 1e-3;
+    const double eps = draw.uniform(0.0, 1.2);
+    const double m_t = k % 100 == 0 ? 0.0 : draw.log_uniform(1e-14, 1e-2);
+    const Vec3 s{1.0, -2.0, 0.5};
+    const double damping = shear_film_damping_apart(m, eps, c.eps_activation, eps1, eps2, radius, m_t);
+    if (m_t == 0.0) {
+      EXPECT_EQ(damping, 0.0);
+      continue;
+    }
+    const Vec3 f = shear_film_force(m, s, eps, c.eps_activation, eps1, eps2, radius, m_t);
+    EXPECT_NEAR(-damping * s.x, f.x, 1e-12 * std::fabs(f.x) + 1e-300) << eps << " " << m_t;
+    EXPECT_NEAR(-damping * s.y, f.y, 1e-12 * std::fabs(f.y) + 1e-300);
+  }
 }

@@ -111,8 +111,9 @@ VECTOR_CASES = {
     # a model per type pair, dry and wet mixed: grouped by type pair
     "mixed": "pair_coeff 1 1 0.8 ncontact 8 {film}\npair_coeff 1 2 0.6 ncontact 6\n"
              "pair_coeff 2 2 0.9 ncontact 10 viscosity {mu2} grid 1e-4",
-    # friction and rolling without shear film: the pairs apart over a step take the film loop
-    "wet friction": "pair_coeff * * 0.8 ncontact 8 {film} friction 0.4 rolling 0.02 shearfilm no",
+    # friction and rolling (the shear film on by default): the pairs apart over a step take the
+    # film loop with the shear film
+    "wet friction": "pair_coeff * * 0.8 ncontact 8 {film} friction 0.4 rolling 0.02",
     "mixed friction": "pair_coeff 1 1 0.8 ncontact 8 {film} friction 0.3 shearfilm no\n"
                       "pair_coeff 1 2 0.6 ncontact 6 friction 0.5\n"
                       "pair_coeff 2 2 0.9 ncontact 10 viscosity {mu2} grid 1e-4 rolling 0.02 shearfilm no",
