@@ -161,3 +161,180 @@ def test_large_curved_wall_is_the_plane(lmp, case):
                         box=box, steps=900))
     flat = lmp(plane_of_radius(R, WET))
     assert normal_speed_ratio(curved, normal) == pytest.approx(flat["v"][2] / U, rel=1e-3)
+
+
+W = 0.05    # the wall's speed
+
+
+@pytest.mark.parametrize("kw", ["0.5", f"0.9 viscosity 4e-3 activation {EPS_AL}"], ids=["dry", "wet"])
+def test_moving_floor_bounces_in_its_frame(lmp, kw):
+    """A floor moving up at W (region move, displacement W t): in the floor's frame the sphere
+    comes in at U + W and leaves as from a fixed plane hit at U + W (Galilean invariance of the
+    contact and the film: only the relative motion enters); dry, that is e_d."""
+    moving = lmp(bounce(region_wall(kw, "floor"), extra_regions=f"variable zw equal {W}*step*{DT}\n"
+                        "region floor block INF INF INF INF -0.01 0.0 side out move NULL NULL v_zw"))
+    fixed = lmp(bounce(f"fix wall all wall/lubrication {kw} zplane 0.0 NULL", v0=(0.0, 0.0, -(U + W))))
+    e_moving = (moving["v"][2] - W) / (U + W)
+    assert e_moving == pytest.approx(fixed["v"][2] / (U + W), rel=1e-9)
+    if kw == "0.5":
+        assert e_moving == pytest.approx(0.5, rel=1e-9)
+    else:
+        assert 0.05 < e_moving < 0.8
+
+
+def sliding_scene(mu, wall_speed, steps=100):
+    """A sphere set down on a floor sliding along x at wall_speed, under gravity 9.81 along -z."""
+    return HEADER + f"""
+region box block -0.01 0.01 -0.01 0.01 -0.01 0.02
+create_box 1 box
+create_atoms 1 single 0 0 {R}
+set atom 1 diameter {2 * R} density {RHO}
+velocity all set 0 0 0
+variable xw equal {wall_speed}*step*{DT}
+region floor block INF INF INF INF -0.01 0.0 side out move v_xw NULL NULL
+fix wall all wall/lubrication/region 0.1 floor friction {mu} tangential 0.5
+fix g all gravity 9.81 vector 0 0 -1
+fix nve all nve/sphere
+timestep {DT}
+thermo_style custom step f_wall[1] f_wall[3]
+thermo 0
+run {steps}
+print "RESULT force $(f_wall[1]:%.17g) $(f_wall[2]:%.17g) $(f_wall[3]:%.17g)"
+print "RESULT vx $(vx[1]:%.17g)"
+"""
+
+
+def test_sliding_floor_pulls_with_coulomb_friction(lmp):
+    """The floor slides under the sphere at 0.1 m/s: the slip lasts 2/7 W / (mu g) ~ 10 ms
+    (200 steps); at step 100 the contact slides and pulls along +x with mu F_n exactly, and the
+    sphere has gained mu g t of speed (within the settling of the first contact)."""
+    mu = 0.3
+    out = lmp(sliding_scene(mu, 0.1))
+    fx, fy, fz = out["force"]
+    mass = RHO * 4.0 / 3.0 * math.pi * R**3
+    assert fz == pytest.approx(mass * 9.81, rel=0.05)
+    assert fx == pytest.approx(mu * fz, rel=1e-9)
+    assert abs(fy) < 1e-12 * fz
+    assert out["vx"] == pytest.approx(mu * 9.81 * 100 * DT, rel=0.05)
+    # A floor at rest leaves the resting sphere alone along x (the pull above is the motion's).
+    assert lmp(sliding_scene(mu, 0.0))["force"][0] == pytest.approx(0.0, abs=1e-15)
+
+
+def couette_scene(mu, omega, steps=40, r_in=5 * R, push=2.0):
+    """A sphere pressed by a radial force (push x its weight) against an inner cylinder
+    region that rotates about z at omega."""
+    mass = RHO * 4.0 / 3.0 * math.pi * R**3
+    force = push * mass * 9.81
+    return HEADER.replace("boundary p p f", "boundary p p p") + f"""
+region box block -0.02 0.02 -0.02 0.02 -0.005 0.005
+create_box 1 box
+create_atoms 1 single {r_in + R} 0 0
+set atom 1 diameter {2 * R} density {RHO}
+velocity all set 0 0 0
+variable theta equal {omega}*step*{DT}
+region inner cylinder z 0 0 {r_in} INF INF side out rotate v_theta 0 0 0 0 0 1
+fix wall all wall/lubrication/region 0.1 inner friction {mu}
+variable fx atom -{force}*x/sqrt(x*x+y*y)
+variable fy atom -{force}*y/sqrt(x*x+y*y)
+fix push all addforce v_fx v_fy 0.0
+fix nve all nve/sphere
+timestep {DT}
+thermo_style custom step f_wall[1] f_wall[6]
+thermo 0
+run {steps}
+print "RESULT wall $(f_wall[1]:%.17g) $(f_wall[2]:%.17g) $(f_wall[3]:%.17g) $(f_wall[4]:%.17g) $(f_wall[5]:%.17g) $(f_wall[6]:%.17g)"
+print "RESULT x $(x[1]:%.17g) $(y[1]:%.17g) $(z[1]:%.17g)"
+"""
+
+
+@pytest.mark.parametrize("omega", [20.0, -20.0])
+def test_rotating_cylinder_transmits_the_friction_torque(lmp, omega):
+    """Couette cell, dilute limit: one sphere pressed with F against the inner cylinder (radius
+    R_in = 5 R) rotating at omega (surface speed 0.1 m/s; F = 2 m g: the slip lasts
+    0.1 / (3.5 mu F / m) ~ 5 ms, 100 steps; checked at step 40). While it slides,
+    the wall's tangential force is mu F_n along the surface's motion and its torque about the
+    axis (r - R) mu F_n (r: the sphere centre's distance from the axis, r - R the contact's), on
+    the cylinder the opposite: mu F R_in in the dilute limit (F_n = F - m v^2 / r, within 2 %)."""
+    mu = 0.3
+    out = lmp(couette_scene(mu, omega))
+    fx, fy, fz, tx, ty, tz = out["wall"]
+    x, y, _ = out["x"]
+    r = math.hypot(x, y)
+    f_n = (fx * x + fy * y) / r
+    f_t = (-fx * y + fy * x) / r
+    mass = RHO * 4.0 / 3.0 * math.pi * R**3
+    assert f_t == pytest.approx(math.copysign(mu * f_n, omega), rel=1e-9)
+    assert tz == pytest.approx((r - R) * f_t, rel=1e-9)
+    assert abs(tz) == pytest.approx(mu * 2.0 * mass * 9.81 * 5 * R, rel=0.02)
+    assert abs(fz) + abs(tx) + abs(ty) < 1e-12 * abs(tz) / R
+
+
+PUSH = 2.0 * 9.81 * RHO * 4.0 / 3.0 * math.pi * R**3    # twice a sphere's weight
+
+
+def annulus_scene(steps=400, extra_run="", omega=20.0):
+    """A wet frictional annular cell: 64 spheres on two rings in two layers between an inner
+    cylinder (R_in = 4.2 mm) rotating at omega and a fixed outer one (9.8 mm), periodic along z
+    (4 mm), every sphere touching a wall at the start, oblique velocities set from the ids
+    (the same on any number of ranks), all pushed towards the axis with twice their weight (the
+    inner ring slides on the rotating cylinder throughout)."""
+    atoms = []
+    for z in (1.0e-3, 3.0e-3):
+        for ring, count in ((5.2e-3, 12), (8.8e-3, 20)):
+            for k in range(count):
+                a = 2.0 * math.pi * (k + 0.25 * (z > 2e-3)) / count
+                atoms.append(f"create_atoms 1 single {ring * math.cos(a):.9f} {ring * math.sin(a):.9f} {z}")
+    return HEADER.replace("boundary p p f", "boundary f f p") + f"""
+region box block -0.011 0.011 -0.011 0.011 0.0 0.004
+create_box 1 box
+{chr(10).join(atoms)}
+set group all diameter {2 * R} density {RHO}
+variable vx atom 0.05*sin(1.7*id)
+variable vy atom 0.05*cos(2.3*id)
+variable vz atom 0.02*sin(0.9*id)
+velocity all set v_vx v_vy v_vz
+variable theta equal {omega}*step*{DT}
+region inner cylinder z 0 0 4.2e-3 INF INF side out rotate v_theta 0 0 0 0 0 1
+region outer cylinder z 0 0 9.8e-3 INF INF side in
+pair_style lubricated/springdashpot
+pair_coeff * * 0.8 friction 0.3 rolling 0.02 viscosity 1e-3 activation 0.1
+fix inner all wall/lubrication/region 0.7 inner friction 0.4 rolling 0.02 viscosity 1e-3 activation 0.1
+fix outer all wall/lubrication/region 0.7 outer friction 0.4 viscosity 1e-3 activation 0.1
+variable fx atom -{PUSH}*x/sqrt(x*x+y*y)
+variable fy atom -{PUSH}*y/sqrt(x*x+y*y)
+fix push all addforce v_fx v_fy 0.0
+fix nve all nve/sphere
+timestep {DT}
+neighbor 0.5e-3 bin
+thermo_style custom step f_inner[1] f_inner[6]
+thermo 0
+fix torque all ave/time 1 200 400 f_inner[6] f_outer[6]
+run {steps}
+{extra_run}
+print "RESULT torque $(f_torque[1]:%.17g) $(f_torque[2]:%.17g)"
+""" + dump_state(6)
+
+
+def assert_same(a, b, rel):
+    assert a.keys() == b.keys() and len(a) >= 13
+    for key in a:
+        assert b[key] == pytest.approx(a[key], rel=rel, abs=1e-13), key
+
+
+def test_annulus_one_and_two_ranks_and_restart(lmp):
+    """The annulus on 1 and 2 ranks (walls and contacts on both sides of the ranks' boundary,
+    atoms migrating with their per-face friction history) agrees to 1e-10; a restart written at
+    step 200 (spheres sliding on both walls) and read by a new process continues the
+    uninterrupted run to 1e-12 (per-face elongations, the region's motion of the last step)."""
+    single = lmp(annulus_scene())
+    assert single["torque"][0] > 0.0    # the rotating cylinder drags the spheres along
+    two = lmp(annulus_scene(), nprocs=2)
+    assert_same(single, two, rel=1e-10)
+    lmp(annulus_scene(steps=200, extra_run="write_restart mid.restart"))
+    fixes = [line for line in annulus_scene().splitlines()
+             if line.startswith(("variable theta", "variable f", "region inner", "region outer", "fix ", "timestep", "neighbor",
+                                 "thermo"))]
+    restarted = lmp("plugin load ${plugin}\nread_restart mid.restart\ncomm_modify vel yes\n" + "\n".join(fixes) +
+                    "\nrun 200\n" + 'print "RESULT torque $(f_torque[1]:%.17g) $(f_torque[2]:%.17g)"\n' +
+                    dump_state(6), name="in.restart")
+    assert_same(single, restarted, rel=1e-12)
