@@ -230,15 +230,16 @@ lub::FilmRadius FixWallLubricationRegion::film_radius(double r, double contact_r
   if (contact_radius == 0.0 || shape == Shape::flat) return lub::FilmRadius(r);
   const double wall_radius = shape == Shape::cylinder ? 0.5 * contact_radius : contact_radius;
   const double second = shape == Shape::sphere ? wall_radius : 0.0;
+  using lub::detail::number;
   if (!lub::sphere_fits_wall(r, wall_radius))
     error->one(FLERR, "{}: a sphere of radius {} does not fit inside the concave surface of radius {} of region {}",
-               STYLE, r, -wall_radius, region_id);
+               STYLE, number(r), number(-wall_radius), region_id);
   const double rf = lub::wall_film_radius(r, wall_radius, second);
   if (!(rf <= MAX_FILM_RATIO * r))
     error->one(FLERR,
                "{}: a sphere of radius {} nearly fills the concave surface of radius {} of region {}: film "
                "radius R_f = {} (allowed: R_f <= {} R)",
-               STYLE, r, -wall_radius, region_id, rf, MAX_FILM_RATIO);
+               STYLE, number(r), number(-wall_radius), region_id, number(rf), number(MAX_FILM_RATIO));
   return lub::FilmRadius(rf);
 }
 

@@ -338,3 +338,46 @@ def test_annulus_one_and_two_ranks_and_restart(lmp):
                     "\nrun 200\n" + 'print "RESULT torque $(f_torque[1]:%.17g) $(f_torque[2]:%.17g)"\n' +
                     dump_state(6), name="in.restart")
     assert_same(single, restarted, rel=1e-12)
+
+
+def bad_scene(fix, region="region floor block INF INF INF INF 0.0 INF", radius=R):
+    return bounce(fix, radius=radius, extra_regions=region, steps=30)
+
+
+BAD = {
+    "unknown_region": (bad_scene("fix w all wall/lubrication/region 0.9 nosuch"),
+                       ["Fix wall/lubrication/region: region nosuch does not exist"]),
+    "missing_e_d": (bad_scene("fix w all wall/lubrication/region floor"),
+                    ["Fix wall/lubrication/region: expected e_d and a region ID"]),
+    "region_before_e_d": (bad_scene("fix w all wall/lubrication/region floor 0.9"),
+                          ["expected a number for e_d, got 'floor'"]),
+    "e_d_out_of_range": (bad_scene("fix w all wall/lubrication/region 1.5 floor"),
+                         ["e_d = 1.5 is out of range (allowed: 0 < e_d <= 1)"]),
+    "unknown_keyword": (bad_scene("fix w all wall/lubrication/region 0.9 floor stiffness 3"),
+                        ["unknown keyword 'stiffness'"]),
+    "sphere_larger_than_concave_region": (
+        bad_scene("fix w all wall/lubrication/region 0.9 cavity", region=f"region cavity sphere 0 0 {1.2137 * R} "
+                  f"{0.9 * R} side in"),
+        ["a sphere of radius 0.001 does not fit inside the concave surface of radius 0.0009 of region cavity"]),
+    "sphere_nearly_filling_a_cylinder": (
+        bad_scene("fix w all wall/lubrication/region 0.9 pipe", region=f"region pipe cylinder z {0.1 * R} 0 {1.05 * R} "
+                  "INF INF side in"),
+        ["nearly fills the concave surface of radius 0.00105 of region pipe", "allowed: R_f <= 4 R"]),
+    "shape_variable_region": (
+        bad_scene("fix w all wall/lubrication/region 0.9 ball",
+                  region=f"variable r equal {5 * R}\nregion ball sphere 0 0 0 v_r side out"),
+        ["region ball changes its shape with variables"]),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BAD))
+def test_bad_input_names_the_problem(lmp, case):
+    text, expected = BAD[case]
+    lmp(text, check=False)
+    lines = lmp.log.splitlines()
+    first = next((k for k, line in enumerate(lines) if "ERROR" in line), None)
+    assert first is not None, f"no ERROR for {case}:\n{lmp.log[-1500:]}"
+    message = "\n".join(lines[first:first + 3])
+    for fragment in expected:
+        assert fragment in message, message
+    assert "Segmentation" not in lmp.log
