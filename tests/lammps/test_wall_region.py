@@ -381,3 +381,59 @@ def test_bad_input_names_the_problem(lmp, case):
     for fragment in expected:
         assert fragment in message, message
     assert "Segmentation" not in lmp.log
+
+
+@pytest.mark.parametrize("mu,dt", [(10.0, 1e-5), (1.0, 1e-6), (0.1, 1e-6)])
+def test_wet_cup_films_never_raise_the_energy(lmp, mu, dt):
+    """The 13-sphere cluster of the dense-bed tests (every gap in the film, St = 5.6e-3 / mu_f
+    down to 5.6e-4) inside a sphere region whose concave surface has every outer sphere in its
+    film too (gap 0.002 R, R_f = 1.5 R): the wall films join each sphere's many-body budget in
+    the pair style, and the energy (kinetic, rotational, spring of pairs and wall) never rises
+    beyond round-off between samples."""
+    import dense_scenes
+    from test_dense_beds import assert_never_gains
+    outer = 2.0 * dense_scenes.R * 1.001 + dense_scenes.R    # the outer spheres' far side
+    cup = (f"region cup sphere 0 0 0 {outer + 0.002 * dense_scenes.R!r} side in units box\n"
+           f"fix cup all wall/lubrication/region 0.9 cup ncontact 8 viscosity {mu} activation 0.1\n"
+           "fix_modify cup energy yes\nfix nve all nve/sphere\n")
+    script = dense_scenes.cluster(mu, dt).replace("fix nve all nve/sphere\n", cup)
+    energy = assert_never_gains(lmp, script)
+    assert energy[-1] < 0.9 * energy[0]    # the films acted
+
+
+def stacked_floors_scene(mu=10.0, dt=1e-5, steps=300):
+    """One sphere (rho 2500) approaching, at 0.01 m/s from 0.05 R, three identical wet region
+    floors (three fixes on one block face: three films on the same mode, each at its own cap
+    at this St = 5.6e-4), pair_style lubricated/springdashpot keeping the film budget."""
+    import dense_scenes
+    walls = "".join(f"fix floor{k} all wall/lubrication/region 0.9 floor viscosity {mu} activation 0.1\n"
+                     f"fix_modify floor{k} energy yes\n" for k in range(3))
+    return dense_scenes.HEADER.replace("boundary p p p", "boundary p p f") + f"""
+region box block -0.005 0.005 -0.005 0.005 0 0.01
+create_box 1 box
+create_atoms 1 single 0 0 {1.05 * R}
+set group all diameter {2 * R} density 2500
+velocity all set 0 0 -0.01
+region floor block INF INF INF INF 0 INF units box
+pair_style lubricated/springdashpot
+pair_coeff * * 0.9 viscosity {mu} activation 0.1
+{walls}
+fix nve all nve/sphere
+timestep {dt}
+compute rot all erotate/sphere
+compute kin all ke
+variable e equal c_kin+c_rot+pe
+thermo_style custom step atoms c_kin c_rot pe v_e
+thermo_modify lost error norm no format float %.17g
+thermo 1
+run {steps}
+"""
+
+
+def test_region_wall_films_share_the_pair_styles_budget(lmp):
+    """Three films on one mode would take 3 m |u_n| a step and throw the sphere back at twice its
+    speed; within the budget (the pair style sums the region walls' shares) they stop it, and the
+    energy never rises."""
+    from test_dense_beds import assert_never_gains
+    energy = assert_never_gains(lmp, stacked_floors_scene())
+    assert energy[-1] < energy[0]
