@@ -84,8 +84,7 @@ FixWallLubricationRegion::FixWallLubricationRegion(LAMMPS *lmp, int narg, char *
   restart_global = 1;    // the region's last displacement (its velocity at a continued set-up)
 
   if (coeffs.tangential() && !(atom->omega_flag && atom->torque_flag))
-    error->all(FLERR,
-               "{} with friction, rolling or shearfilm requires per-atom omega and torque (atom_style sphere)",
+    error->all(FLERR, "{} with friction, rolling or shearfilm requires per-atom omega and torque (atom_style sphere)",
                STYLE);
   if (keeps_history()) {
     restart_peratom = 1;
@@ -308,11 +307,12 @@ void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, 
   // can close in a step (normal_model.h acts()).
   const lub::Vec3 arm = lub::minus({xi[0], xi[1], xi[2]}, motion.point);
   const double wall_speed = std::sqrt(lub::dot(motion.velocity, motion.velocity)) +
-      std::sqrt(lub::dot(motion.spin, motion.spin)) * (std::sqrt(lub::dot(arm, arm)) + r);
+                            std::sqrt(lub::dot(motion.spin, motion.spin)) * (std::sqrt(lub::dot(arm, arm)) + r);
   const double speed = std::sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]) + wall_speed;
   const double cutoff = r + model.normal.reach(MAX_FILM_RATIO * r) + 2.0 * speed * update->dt;
   const int nc = region->surface(xi[0], xi[1], xi[2], cutoff);
-  if (nc > slots) error->one(FLERR, "{}: {} contacts of one atom with region {} (at most {})", STYLE, nc, region_id, slots);
+  if (nc > slots)
+    error->one(FLERR, "{}: {} contacts of one atom with region {} (at most {})", STYLE, nc, region_id, slots);
 
   const bool tangential_on = model.tangential.active();
   const bool moving = motion.moving();
@@ -333,10 +333,9 @@ void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, 
       // Relative to the wall's material point at the contact; u_n with the velocity over the
       // last step (fix nve/sphere/midpoint's where it integrates).
       const lub::Vec3 contact_point{xi[0] - c.delx, xi[1] - c.dely, xi[2] - c.delz};
-      rel = lub::relative_to_wall(motion, {v[i][0], v[i][1], v[i][2]}, {omega[i][0], omega[i][1], omega[i][2]}, r,
-                                  n, contact_point);
-      if (exact_velocity)
-        rel.u_n = lub::dot(lub::minus({vi[0], vi[1], vi[2]}, motion.velocity_at(contact_point)), n);
+      rel = lub::relative_to_wall(motion, {v[i][0], v[i][1], v[i][2]}, {omega[i][0], omega[i][1], omega[i][2]}, r, n,
+                                  contact_point);
+      if (exact_velocity) rel.u_n = lub::dot(lub::minus({vi[0], vi[1], vi[2]}, motion.velocity_at(contact_point)), n);
     } else {
       rel.u_n = vi[0] * n.x + vi[1] * n.y + vi[2] * n.z;
     }

@@ -83,7 +83,7 @@ class FixWallLubricationRegion : public Fix {
   int slots = 0;    // region->tmax
   double **history = nullptr;
   bool keeps_history() const { return coeffs.friction > 0.0; }
-  std::vector<int> faces;    // the faces near the atom being evaluated
+  std::vector<int> faces;                   // the faces near the atom being evaluated
   double *history_slot(int i, int face);    // its slot, taken (zeroed) when it has none
   void forget_slot(int i, int face);
   void release_other_slots(int i, const int *near, int n);

@@ -100,8 +100,9 @@ void FixWallLubricationRegion::unpack_restart(int nlocal, int nth)
   for (int k = 0; k < nth; k++)
     m += static_cast<int>(extra[nlocal][m]);
   if (static_cast<int>(extra[nlocal][m]) != slots * SLOT + 1)
-    error->one(FLERR, "Fix wall/lubrication/region: the restart file's friction history is for a region with {} "
-                      "faces, region {} has {}",
+    error->one(FLERR,
+               "Fix wall/lubrication/region: the restart file's friction history is for a region with {} "
+               "faces, region {} has {}",
                (static_cast<int>(extra[nlocal][m]) - 1) / SLOT, region_id, slots);
   std::memcpy(history[nlocal], &extra[nlocal][m + 1], sizeof(double) * slots * SLOT);
 }
