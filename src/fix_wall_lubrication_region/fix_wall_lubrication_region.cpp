@@ -234,7 +234,7 @@ lub::FilmRadius FixWallLubricationRegion::film_radius(double r, double contact_r
     error->one(FLERR, "{}: a sphere of radius {} does not fit inside the concave surface of radius {} of region {}",
                STYLE, number(r), number(-wall_radius), region_id);
   const double rf = lub::wall_film_radius(r, wall_radius, second);
-  if (!(rf <= MAX_FILM_RATIO * r))
+  if (model.normal.lubrication.active() && !(rf <= MAX_FILM_RATIO * r))
     error->one(FLERR,
                "{}: a sphere of radius {} nearly fills the concave surface of radius {} of region {}: film "
                "radius R_f = {} (allowed: R_f <= {} R)",

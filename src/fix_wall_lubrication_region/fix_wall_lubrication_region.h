@@ -61,7 +61,7 @@ class FixWallLubricationRegion : public Fix {
 
   // Largest film radius against a concave surface, in sphere radii: R_f <= 4 R keeps the
   // search cutoff and the budget's bounds finite (a sphere region of radius >= 4/3 R, a
-  // cylinder of radius >= 16/15 R); a sphere nearly filling a concave region is an error.
+  // cylinder of radius >= 16/15 R); a wet sphere nearly filling a concave region is an error.
   static constexpr double MAX_FILM_RATIO = 4.0;
 
  protected:

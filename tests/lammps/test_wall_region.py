@@ -360,7 +360,7 @@ BAD = {
                   f"{0.9 * R} side in"),
         ["a sphere of radius 0.001 does not fit inside the concave surface of radius 0.0009 of region cavity"]),
     "sphere_nearly_filling_a_cylinder": (
-        bad_scene("fix w all wall/lubrication/region 0.9 pipe", region=f"region pipe cylinder z {0.1 * R} 0 {1.05 * R} "
+        bad_scene(f"fix w all wall/lubrication/region 0.9 pipe viscosity 1e-3 activation {EPS_AL}", region=f"region pipe cylinder z {0.1 * R} 0 {1.05 * R} "
                   "INF INF side in"),
         ["nearly fills the concave surface of radius 0.00105 of region pipe", "allowed: R_f <= 4 R"]),
     "shape_variable_region": (
