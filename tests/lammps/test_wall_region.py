@@ -99,6 +99,47 @@ def test_flat_face_is_the_plane_wall(lmp, case):
     assert region["v"][2] > 0.0
 
 
+def corner_scene(walls, steps=1500):
+    """A spinning sphere thrown into the corner x = 0, z = 0 under a slanted gravity, where it
+    stays pressed on both faces, rolling and sliding (two frictional contacts at once)."""
+    return HEADER + f"""
+region box block -0.01 0.01 -0.01 0.01 -0.01 0.02
+create_box 1 box
+create_atoms 1 single {1.3 * R} 0 {1.2 * R}
+set atom 1 diameter {2 * R} density {RHO}
+velocity all set -0.05 0.02 -0.08
+set atom 1 omega 30 -40 10
+{walls}
+fix g all gravity 9.81 vector -0.6 0.3 -1
+fix nve all nve/sphere
+compute om all property/atom omegax omegay omegaz
+compute spin all reduce sum c_om[1] c_om[2] c_om[3]
+timestep {DT}
+thermo_style custom step c_spin[1]
+thermo 0
+run {steps // 2}
+print "RESULT mid $(x[1]:%.17g) $(y[1]:%.17g) $(z[1]:%.17g) $(vx[1]:%.17g) $(vy[1]:%.17g) $(vz[1]:%.17g)"
+run {steps - steps // 2}
+print "RESULT x $(x[1]:%.17g) $(y[1]:%.17g) $(z[1]:%.17g)"
+print "RESULT v $(vx[1]:%.17g) $(vy[1]:%.17g) $(vz[1]:%.17g)"
+print "RESULT w $(c_spin[1]:%.17g) $(c_spin[2]:%.17g) $(c_spin[3]:%.17g)"
+"""
+
+
+@pytest.mark.parametrize("kw", [KEYWORDS["friction"], "0.5 friction 0.4 tangential 0.3"], ids=["wet", "dry"])
+def test_corner_of_a_block_is_two_plane_walls(lmp, kw):
+    """Two faces of one block region at once (one friction history per face) follow the two
+    plane walls xplane 0 and zplane 0 of fix wall/lubrication to round-off."""
+    e_d, _, rest = kw.partition(" ")
+    planes = lmp(corner_scene(f"fix wx all wall/lubrication {kw} xplane 0.0 NULL\n"
+                              f"fix wz all wall/lubrication {kw} zplane 0.0 NULL"))
+    region = lmp(corner_scene("region corner block 0.0 INF INF INF 0.0 INF units box\n" +
+                              region_wall(kw, "corner")))
+    close(planes, region, rel=1e-11, abs_=1e-14)
+    # In the corner at the end, pressed on both faces.
+    assert region["x"][0] < 1.001 * R and region["x"][2] < 1.001 * R
+
+
 def plane_of_radius(film_radius, kw, steps=900):
     """The sphere of mass m and radius R_f bouncing on a plane from the same gap at U."""
     density = RHO * (R / film_radius) ** 3
