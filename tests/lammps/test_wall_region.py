@@ -14,6 +14,11 @@ wall/lubrication on a region's surface, static, moving or rotating.
   floor sliding under a resting sphere pulls it with mu F_n (Coulomb); a rotating inner
   cylinder (Couette cell) transmits the torque mu F_n (r - R) about its axis, with the sign of
   its rotation.
+- Two faces at once: a sphere pressed into a block's corner with friction follows the two
+  plane walls xplane and zplane to round-off (one friction history per face).
+- Many bodies: three wet films of one floor on one sphere share the pair style's film budget
+  (without it the sphere is thrown back at twice its speed each step: energy x4); a wet
+  cluster in a sphere region never gains energy.
 - 1 = 2 ranks, a restart in the middle of frictional contacts continues the run, bad input.
 """
 import math
