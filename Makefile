@@ -5,7 +5,7 @@ BUILD  := build
 JOBS   ?= 2
 
 .PHONY: all setup setup-liggghts build demo test test-kernel test-lammps test-liggghts bench format format-check \
-        bench-liggghts report fluidized-bed liggghts-demo clean
+        bench-liggghts report fluidized-bed liggghts-demo shear-cell clean
 
 all: build
 
@@ -66,6 +66,13 @@ report: build
 # The 2133-sphere fluidised bed on 2 MPI ranks: dumps and a solid-fraction profile.
 fluidized-bed: build
 	$(PY) examples/fluidized_bed/run_fluidized_bed.py --out $(BUILD)/fluidized_bed
+
+# A wet annular shear cell: the inner cylinder region rotates; prints the torque on it (~10 s).
+shear-cell: build
+	@mkdir -p $(BUILD)/shear_cell
+	cd $(BUILD)/shear_cell && LD_LIBRARY_PATH=$(CURDIR)/$(VENV)/lib $$($(CURDIR)/$(PY) $(CURDIR)/tools/lammps_run.py) \
+	  -in $(CURDIR)/examples/shear_cell/in.shear_cell -var plugin $(CURDIR)/$(BUILD)/lubricatedplugin.so \
+	  -log log.shear_cell -nocite
 
 clean:
 	rm -rf $(BUILD)

@@ -11,6 +11,7 @@
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "fix_wall_lubrication/fix_wall_lubrication.h"
+#include "fix_wall_lubrication_region/fix_wall_lubrication_region.h"
 #include "lubricated/check_setup.h"
 #include "lubricated/contact_network.h"
 #include "lubricated/contact_network_message.h"
@@ -239,6 +240,13 @@ void PairLubricatedSpringDashpot::init_style()
     auto wall = dynamic_cast<FixWallLubrication *>(ifix);
     if (!wall) continue;
     walls.push_back(wall);
+    wet_walls = wet_walls || wall->wet();
+  }
+  region_walls.clear();
+  for (auto &ifix : modify->get_fix_by_style("^wall/lubrication/region$")) {
+    auto wall = dynamic_cast<FixWallLubricationRegion *>(ifix);
+    if (!wall) continue;
+    region_walls.push_back(wall);
     wet_walls = wet_walls || wall->wet();
   }
   film_budget = limit_per_atom && (any_wet || wet_walls);

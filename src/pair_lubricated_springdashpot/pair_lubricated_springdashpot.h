@@ -80,6 +80,8 @@ class PairLubricatedSpringDashpot : public Pair {
   bool limit_per_atom = true;
   bool film_budget = false;
   std::vector<class FixWallLubrication *> walls;    // their films share the atoms' budget
+  // and those of fix wall/lubrication/region
+  std::vector<class FixWallLubricationRegion *> region_walls;
   std::vector<double> load_of_atom, scale_of_atom;
   std::vector<int> record_i, record_j;
   std::vector<double> record_force;

@@ -12,6 +12,7 @@
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "fix_wall_lubrication/fix_wall_lubrication.h"
+#include "fix_wall_lubrication_region/fix_wall_lubrication_region.h"
 #include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
 
 using namespace LAMMPS_NS;
@@ -46,6 +47,11 @@ static Pair *create_pair(LAMMPS *lmp)
 static Fix *create_fix_wall(LAMMPS *lmp, int narg, char **arg)
 {
   return new FixWallLubrication(lmp, narg, arg);
+}
+
+static Fix *create_fix_wall_region(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixWallLubricationRegion(lmp, narg, arg);
 }
 
 static Fix *create_fix_drag(LAMMPS *lmp, int narg, char **arg)
@@ -87,6 +93,11 @@ void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "wall/lubrication";
   plugin.info = "planar walls with lubricated spring-dashpot contact";
   plugin.creator.v2 = (lammpsplugin_factory2 *)&create_fix_wall;
+  (*reg)(&plugin, lmp);
+
+  plugin.name = "wall/lubrication/region";
+  plugin.info = "region walls, moving or rotating, with lubricated spring-dashpot contact";
+  plugin.creator.v2 = (lammpsplugin_factory2 *)&create_fix_wall_region;
   (*reg)(&plugin, lmp);
 
   plugin.name = "nve/sphere/midpoint";

@@ -35,3 +35,11 @@ def test_fluidized_bed_input_runs_on_two_ranks(lmp):
     result = lmp(example("fluidized_bed/in.fluidized_bed"), nprocs=2, steps=200)
     assert result["atoms"] == 2133
     assert list(lmp.dir.glob("dump.fluidized_bed.*"))
+
+
+def test_shear_cell_runs_on_two_ranks_and_drags_the_beads(lmp):
+    """The wet annular shear cell (make shear-cell), 1000 steps on 2 ranks: no bead lost, and the
+    beads brake the rotating inner cylinder (a torque against its rotation)."""
+    result = lmp(example("shear_cell/in.shear_cell"), nprocs=2, steps=1000)
+    assert result["atoms"] == 752
+    assert result["torque_mean_last_1000"] < 0.0

@@ -1,0 +1,453 @@
+/* ----------------------------------------------------------------------
+   fix wall/lubrication/region (see doc/fix_wall_lubrication_region.rst)
+
+   fix ID group wall/lubrication/region e_d regionID [keyword value ...]
+     keywords as in pair_coeff of pair_style lubricated/springdashpot
+------------------------------------------------------------------------- */
+
+#include "fix_wall_lubrication_region.h"
+
+#include "unit_style/unit_style.h"
+
+#include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
+#include "fix_step_velocity/fix_step_velocity.h"
+#include "lubricated/check_setup.h"
+#include "lubricated/film_budget.h"
+#include "lubricated/wall_curvature.h"
+#include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "region.h"
+#include "update.h"
+#include "utils.h"
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+namespace lub = lubricated;
+
+static constexpr const char *STYLE = "Fix wall/lubrication/region";
+
+namespace {
+// The rotation's point and unit axis are protected members of Region; a pointer to a member,
+// taken in a derived class, reads them without copying LAMMPS's code (never instantiated).
+struct RegionAxis : Region {
+  static const double *point_of(const Region *r) { return r->*(&RegionAxis::point); }
+  static const double *axis_of(const Region *r) { return r->*(&RegionAxis::runit); }
+};
+}    // namespace
+
+FixWallLubricationRegion::FixWallLubricationRegion(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), contact_mass(lmp)
+{
+  ContactMass::watch_setforce(lmp);
+  require_supported_units(lmp, STYLE);
+  if (!atom->radius_flag || !atom->rmass_flag)
+    error->all(FLERR, "{} requires atom_style sphere (per-atom radius and rmass)", STYLE);
+  if (narg < 5) error->all(FLERR, "{}: expected e_d and a region ID (fix ID group {} e_d regionID ...)", STYLE, style);
+
+  // e_d, then the coefficient keywords after the region ID, exactly as in pair_coeff.
+  std::vector<std::string> words{arg[3]};
+  words.insert(words.end(), arg + 5, arg + narg);
+  const std::string problem = lub::parse_coefficients(words, 0, coeffs);
+  if (!problem.empty()) error->all(FLERR, "{}: {}", STYLE, problem);
+
+  region_id = arg[4];
+  region = domain->get_region_by_id(region_id);
+  if (!region) error->all(FLERR, "{}: region {} does not exist", STYLE, region_id);
+  if (region->varshape)
+    error->all(FLERR,
+               "{}: region {} changes its shape with variables (not supported: the wall's velocity "
+               "would miss the shape change; use the region's move or rotate keywords)",
+               STYLE, region_id);
+  slots = region->tmax;
+
+  scalar_flag = 1;    // elastic energy stored in the wall springs
+  vector_flag = 1;    // force and torque of the wall on the group
+  size_vector = 6;
+  global_freq = 1;
+  extscalar = 1;
+  extvector = 1;
+  energy_global_flag = 1;
+  dynamic_group_allow = 1;
+  restart_global = 1;    // the region's last displacement (its velocity at a continued set-up)
+
+  if (coeffs.tangential() && !(atom->omega_flag && atom->torque_flag))
+    error->all(FLERR, "{} with friction, rolling or shearfilm requires per-atom omega and torque (atom_style sphere)",
+               STYLE);
+  if (keeps_history()) {
+    restart_peratom = 1;
+    create_attribute = 1;
+    maxexchange = slots * SLOT;
+    grow_arrays(atom->nmax);
+    for (int i = 0; i < atom->nmax; i++)
+      set_arrays(i);
+    atom->add_callback(Atom::GROW);
+    atom->add_callback(Atom::RESTART);
+  }
+}
+
+FixWallLubricationRegion::~FixWallLubricationRegion()
+{
+  if (keeps_history()) {
+    atom->delete_callback(id, Atom::GROW);
+    atom->delete_callback(id, Atom::RESTART);
+  }
+  memory->destroy(history);
+}
+
+void FixWallLubricationRegion::post_constructor()
+{
+  FixStepVelocity::find_or_create(lmp);
+}
+
+int FixWallLubricationRegion::setmask()
+{
+  return (coeffs.wet() ? PRE_FORCE : 0) | POST_FORCE | MIN_POST_FORCE;
+}
+
+void FixWallLubricationRegion::init()
+{
+  region = domain->get_region_by_id(region_id);
+  if (!region) error->all(FLERR, "{}: region {} does not exist", STYLE, region_id);
+  if (region->tmax != slots)
+    error->all(FLERR, "{}: region {} was redefined with another number of faces", STYLE, region_id);
+  // LAMMPS reports one curvature radius per contact (Region::Contact::radius, 0 for a flat
+  // face): +-R_s for a sphere (+ outside, - inside: this project's sign) and +-2 R_c on a
+  // cylinder's curved face; other styles are read as flat (doc: "Curved surfaces").
+  const std::string kind = region->style;
+  shape = kind == "sphere" ? Shape::sphere : kind == "cylinder" ? Shape::cylinder : Shape::flat;
+
+  lub::settle_contact_time(coeffs, update->dt);
+  const lub::SetupCheck check = lub::check_setup(coeffs, lub::Partner::wall, update->dt);
+  if (!check.error.empty()) error->all(FLERR, "{}: {}", STYLE, check.error);
+  if (comm->me == 0) {
+    utils::logmesg(lmp, "{}: region {} ({}), {}\n", STYLE, region_id, kind, check.description);
+    if (!check.tangential.empty()) utils::logmesg(lmp, "{}: {}\n", STYLE, check.tangential);
+    for (const std::string &w : check.warnings)
+      error->warning(FLERR, "{}: {}", STYLE, w);
+  }
+  reset_dt();
+  midpoint = nullptr;
+  for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
+    midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
+  step_velocity = midpoint ? nullptr : dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
+  pair = dynamic_cast<PairLubricatedSpringDashpot *>(force->pair_match("lubricated/springdashpot", 1));
+  contact_mass.init(STYLE, !pair);
+  const std::string problem = lub::validate_grid_for_radius(coeffs, smallest_sphere_radius(lmp, STYLE, groupbit));
+  if (!problem.empty()) error->all(FLERR, "{}: {}", STYLE, problem);
+  films_pending = false;
+}
+
+void FixWallLubricationRegion::reset_dt()
+{
+  model = lub::make_contact_model(coeffs, lub::Partner::wall, update->dt, &model);
+}
+
+// As fix wall/lubrication: a wet wall is computed before the pair style and its films applied
+// after it, within the atoms' film budget; a dry wall is computed after the pair style.
+void FixWallLubricationRegion::setup_pre_force(int /*vflag*/)
+{
+  if (update->whichflag == 1 && model.normal.lubrication.active()) compute_walls(true);
+}
+
+void FixWallLubricationRegion::pre_force(int /*vflag*/)
+{
+  if (model.normal.lubrication.active()) compute_walls(true);
+}
+
+void FixWallLubricationRegion::setup(int /*vflag*/)
+{
+  if (model.normal.lubrication.active())
+    apply_films();
+  else
+    compute_walls(false);
+}
+
+void FixWallLubricationRegion::post_force(int /*vflag*/)
+{
+  if (model.normal.lubrication.active())
+    apply_films();
+  else
+    compute_walls(false);
+}
+
+void FixWallLubricationRegion::min_setup(int /*vflag*/)
+{
+  compute_walls(false);
+}
+
+void FixWallLubricationRegion::min_post_force(int /*vflag*/)
+{
+  compute_walls(false);
+}
+
+// The region's displacement and angle at this step (Region::prematch evaluates its variables),
+// differenced with the last step's: V and Omega over the last step, as the atoms' velocities
+// are. The first evaluation has no last step: the region is taken at rest there. A second
+// evaluation at the same step (a set-up that continues the run, `run 0`) keeps them.
+void FixWallLubricationRegion::update_motion()
+{
+  region->prematch();
+  if (!region->dynamic) {
+    motion = lub::RigidWallMotion();
+    return;
+  }
+  const double now[4] = {region->dx, region->dy, region->dz, region->theta};
+  if (update->ntimestep == last_step) return;
+  const bool known = last_step >= 0 && update->ntimestep == last_step + 1;
+  const double rate = known ? 1.0 / update->dt : 0.0;
+  motion = lub::RigidWallMotion();
+  if (region->moveflag)
+    motion.velocity = {(now[0] - last_displacement[0]) * rate, (now[1] - last_displacement[1]) * rate,
+                       (now[2] - last_displacement[2]) * rate};
+  if (region->rotateflag) {
+    const double *p = RegionAxis::point_of(region), *axis = RegionAxis::axis_of(region);
+    const double angular = (now[3] - last_displacement[3]) * rate;
+    motion.spin = {angular * axis[0], angular * axis[1], angular * axis[2]};
+    motion.point = {p[0] + now[0], p[1] + now[1], p[2] + now[2]};
+  }
+  for (int k = 0; k < 4; k++)
+    last_displacement[k] = now[k];
+  last_step = update->ntimestep;
+}
+
+// R_f of the sphere against the face of a contact (wall_curvature.h), from LAMMPS's radius.
+lub::FilmRadius FixWallLubricationRegion::film_radius(double r, double contact_radius) const
+{
+  if (contact_radius == 0.0 || shape == Shape::flat) return lub::FilmRadius(r);
+  const double wall_radius = shape == Shape::cylinder ? 0.5 * contact_radius : contact_radius;
+  const double second = shape == Shape::sphere ? wall_radius : 0.0;
+  using lub::detail::number;
+  if (!lub::sphere_fits_wall(r, wall_radius))
+    error->one(FLERR, "{}: a sphere of radius {} does not fit inside the concave surface of radius {} of region {}",
+               STYLE, number(r), number(-wall_radius), region_id);
+  const double rf = lub::wall_film_radius(r, wall_radius, second);
+  if (model.normal.lubrication.active() && !(rf <= MAX_FILM_RATIO * r))
+    error->one(FLERR,
+               "{}: a sphere of radius {} nearly fills the concave surface of radius {} of region {}: film "
+               "radius R_f = {} (allowed: R_f <= {} R)",
+               STYLE, number(r), number(-wall_radius), region_id, number(rf), number(MAX_FILM_RATIO));
+  return lub::FilmRadius(rf);
+}
+
+void FixWallLubricationRegion::add_to_sums(const double *x, const lub::Vec3 &force, const lub::Vec3 &torque)
+{
+  // Torque about the reference point: the rotation point of a rotating region, else the origin.
+  const lub::Vec3 arm = lub::minus({x[0], x[1], x[2]}, motion.point);
+  const lub::Vec3 moment = lub::plus(lub::cross(arm, force), torque);
+  local_sums[1] += force.x, local_sums[2] += force.y, local_sums[3] += force.z;
+  local_sums[4] += moment.x, local_sums[5] += moment.y, local_sums[6] += moment.z;
+}
+
+void FixWallLubricationRegion::compute_walls(bool defer_films)
+{
+  const bool continued = step_velocity && step_velocity->continues() && !contact_mass.active();
+  double **v = continued ? step_velocity->velocity() : atom->v;
+  double **omega = continued ? step_velocity->spin() : atom->omega;
+  const double *rmass = atom->rmass;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const lub::Evaluation when =
+      continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
+
+  for (double &s : local_sums)
+    s = 0.0;
+  sums_reduced = false;
+  films_pending = defer_films = defer_films && model.normal.lubrication.active();
+  shear_pending = defer_films && model.tangential.film_active();
+  if (defer_films) {
+    film_force.assign(3 * static_cast<std::size_t>(nlocal), 0.0);
+    film_load.assign(nlocal, 0.0);
+  }
+  if (shear_pending) shear_film.assign(6 * static_cast<std::size_t>(nlocal), 0.0);
+  const double kick_time =
+      lub::film_kick_time(update->dt, when != lub::Evaluation::step, when == lub::Evaluation::midpoint_start);
+  update_motion();
+
+  if (!contact_mass.active()) {
+    for (int i = 0; i < nlocal; i++)
+      if (mask[i] & groupbit) contacts_of_atom(i, rmass[i], v, omega, defer_films, kick_time, when);
+    return;
+  }
+  if (neighbor->ago == 0 || update->setupflag || static_cast<int>(inverse_mass.size()) < nlocal) {
+    if (static_cast<int>(inverse_mass.size()) < nlocal) inverse_mass.resize(atom->nmax);
+    contact_mass.fill(inverse_mass.data());
+  }
+  for (int i = 0; i < nlocal; i++)
+    if ((mask[i] & groupbit) && inverse_mass[i] > 0.0)
+      contacts_of_atom(i, 1.0 / inverse_mass[i], v, omega, defer_films, kick_time, when);
+}
+
+// Every contact of atom i (contact mass `mass`) with the region's surface.
+void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, double **omega, bool defer_films,
+                                                double kick_time, lub::Evaluation when)
+{
+  double *xi = atom->x[i];
+  const double r = atom->radius[i];
+  // A centre outside the region is left alone (as fix wall/gran/region).
+  if (!region->match(xi[0], xi[1], xi[2])) {
+    if (history) release_other_slots(i, nullptr, 0);
+    return;
+  }
+  const bool exact_velocity = midpoint && model.normal.exact;
+  const double *vi = exact_velocity ? midpoint->step_velocity(i) : v[i];
+  // Search reach: the film's for the largest film radius allowed, and what the relative motion
+  // can close in a step (normal_model.h acts()).
+  const lub::Vec3 arm = lub::minus({xi[0], xi[1], xi[2]}, motion.point);
+  const double wall_speed = std::sqrt(lub::dot(motion.velocity, motion.velocity)) +
+                            std::sqrt(lub::dot(motion.spin, motion.spin)) * (std::sqrt(lub::dot(arm, arm)) + r);
+  const double speed = std::sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]) + wall_speed;
+  const double cutoff = r + model.normal.reach(MAX_FILM_RATIO * r) + 2.0 * speed * update->dt;
+  const int nc = region->surface(xi[0], xi[1], xi[2], cutoff);
+  if (nc > slots)
+    error->one(FLERR, "{}: {} contacts of one atom with region {} (at most {})", STYLE, nc, region_id, slots);
+
+  const bool tangential_on = model.tangential.active();
+  const bool moving = motion.moving();
+  if (history) {    // faces no longer near the atom forget their elongation
+    faces.resize(nc);
+    for (int ic = 0; ic < nc; ic++)
+      faces[ic] = region->contact[ic].iwall;
+    release_other_slots(i, faces.data(), nc);
+  }
+  for (int ic = 0; ic < nc; ic++) {
+    const Region::Contact &c = region->contact[ic];
+    if (c.r <= 0.0) continue;    // a centre on the surface has no normal
+    const lub::Vec3 n{c.delx / c.r, c.dely / c.r, c.delz / c.r};
+    const lub::FilmRadius film = film_radius(r, c.radius);
+    const double gap = c.r - r;
+    lub::RelativeMotion rel;
+    if (moving) {
+      // Relative to the wall's material point at the contact; u_n with the velocity over the
+      // last step (fix nve/sphere/midpoint's where it integrates).
+      const lub::Vec3 contact_point{xi[0] - c.delx, xi[1] - c.dely, xi[2] - c.delz};
+      rel = lub::relative_to_wall(motion, {v[i][0], v[i][1], v[i][2]}, {omega[i][0], omega[i][1], omega[i][2]}, r, n,
+                                  contact_point);
+      if (exact_velocity) rel.u_n = lub::dot(lub::minus({vi[0], vi[1], vi[2]}, motion.velocity_at(contact_point)), n);
+    } else {
+      rel.u_n = vi[0] * n.x + vi[1] * n.y + vi[2] * n.z;
+    }
+    if (!model.normal.acts(gap, film.value, rel.u_n)) {
+      if (history) forget_slot(i, c.iwall);
+      continue;
+    }
+    double *h = history ? history_slot(i, c.iwall) : nullptr;
+
+    lub::ContactPoint p;
+    p.gap = gap, p.u_n = rel.u_n, p.reduced_mass = mass, p.film = film;
+    lub::HistorySlot slot;
+    if (tangential_on) {
+      p.n = n;
+      p.dv = moving ? rel.dv : lub::Vec3{v[i][0], v[i][1], v[i][2]};
+      p.omega_i = moving ? rel.omega : lub::Vec3{omega[i][0], omega[i][1], omega[i][2]};
+      p.radius_i = r, p.reduced_radius = r;
+      p.mass_i = atom->rmass[i];
+      if (h) slot = {h + 1, h[4] != 0.0, !update->setupflag};
+    }
+    const lub::ContactForces cf =
+        tangential_on ? lub::contact_forces<true, lub::Partner::wall>(model, p, slot, when, shear_pending)
+                      : lub::contact_forces<false, lub::Partner::wall>(model, p, slot, when);
+    if (h) h[4] = slot.touched;
+    const lub::NormalForce &fn = cf.normal;
+    double normal = fn.total(), share = 0.0;
+    if (defer_films) {    // applied in post_force, within the atom's film budget
+      normal = fn.contact;
+      double *ff = &film_force[3 * i];
+      ff[0] += fn.lubrication * n.x, ff[1] += fn.lubrication * n.y, ff[2] += fn.lubrication * n.z;
+      share = lub::film_share(fn.lubrication, mass, rel.u_n, kick_time);
+      if (!shear_pending) film_load[i] += share;
+    }
+    lub::Vec3 force = lub::scaled(n, normal), torque;
+    local_sums[0] += fn.energy;
+    if (tangential_on) {
+      if (shear_pending) {
+        film_load[i] += lub::contact_film_share(share, cf.shear_share(kick_time));
+        double *out = &shear_film[6 * i];
+        out[0] += cf.shear.x, out[1] += cf.shear.y, out[2] += cf.shear.z;
+        out[3] += cf.shear_torque_i.x, out[4] += cf.shear_torque_i.y, out[5] += cf.shear_torque_i.z;
+      }
+      force = lub::plus(force, cf.tangential);
+      torque = cf.torque_i;
+      double *ti = atom->torque[i];
+      ti[0] += torque.x, ti[1] += torque.y, ti[2] += torque.z;
+    }
+    double *fi = atom->f[i];
+    fi[0] += force.x, fi[1] += force.y, fi[2] += force.z;
+    add_to_sums(xi, force, torque);
+  }
+}
+
+void FixWallLubricationRegion::add_film_loads(double *load, int nlocal) const
+{
+  if (!films_pending) return;
+  for (int i = 0; i < nlocal; i++)
+    load[i] += film_load[i];
+}
+
+// Every atom of the group counts as near each face it may touch at once (tmax), with the bound
+// of the largest film radius allowed.
+void FixWallLubricationRegion::add_film_share_bounds(double *bound, int nlocal) const
+{
+  if (!model.normal.lubrication.active()) return;
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  const int *mask = atom->mask;
+  const bool shear_film = model.tangential.film_active();
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit)
+      bound[i] += slots * (shear_film ? 1.0
+                                      : lub::film_share_bound(model.normal.lubrication, MAX_FILM_RATIO * radius[i],
+                                                              rmass[i], update->dt));
+}
+
+void FixWallLubricationRegion::apply_films()
+{
+  if (!films_pending) return;
+  films_pending = false;
+  double **f = atom->f, **torque = atom->torque, **x = atom->x;
+  const int nlocal = atom->nlocal;
+  const bool by_pair = pair && pair->keeps_film_budget();
+  const bool own = !pair;
+  const double *shear = shear_pending ? shear_film.data() : nullptr;
+  for (int i = 0; i < nlocal; i++) {
+    const double *ff = &film_force[3 * i];
+    const double *fs = shear ? shear + 6 * i : nullptr;
+    const bool film = ff[0] != 0.0 || ff[1] != 0.0 || ff[2] != 0.0;
+    if (!film && !(fs && (fs[0] != 0.0 || fs[1] != 0.0 || fs[2] != 0.0))) continue;
+    const double scale = by_pair ? pair->film_scale(i) : own ? lub::film_scale_of_load(film_load[i]) : 1.0;
+    lub::Vec3 force = lub::scaled({ff[0], ff[1], ff[2]}, scale), moment;
+    if (fs) {
+      force = lub::plus(force, lub::scaled({fs[0], fs[1], fs[2]}, scale));
+      moment = lub::scaled({fs[3], fs[4], fs[5]}, scale);
+      torque[i][0] += moment.x, torque[i][1] += moment.y, torque[i][2] += moment.z;
+    }
+    f[i][0] += force.x, f[i][1] += force.y, f[i][2] += force.z;
+    add_to_sums(x[i], force, moment);
+  }
+}
+
+double FixWallLubricationRegion::compute_scalar()
+{
+  if (!sums_reduced) {
+    MPI_Allreduce(local_sums, global_sums, 7, MPI_DOUBLE, MPI_SUM, world);
+    sums_reduced = true;
+  }
+  return global_sums[0];
+}
+
+double FixWallLubricationRegion::compute_vector(int n)
+{
+  compute_scalar();
+  return global_sums[1 + n];
+}

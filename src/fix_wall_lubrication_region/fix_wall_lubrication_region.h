@@ -1,0 +1,116 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   fix wall/lubrication/region: the wall of fix wall/lubrication on the surface of any LAMMPS
+   region, static, moving or rotating (doc/fix_wall_lubrication_region.rst). The contact and
+   film act on the sphere's motion relative to the region's surface at the contact point; the
+   film takes the radius R_f of the curved surface (lubricated/wall_curvature.h); friction
+   history is kept per atom and per region face, migrates and is written to restart files.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_FIX_WALL_LUBRICATION_REGION_H
+#define LMP_FIX_WALL_LUBRICATION_REGION_H
+
+#include "fix.h"
+
+#include "contact_mass/contact_mass.h"
+#include "lubricated/contact.h"
+#include "lubricated/wall_motion.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixWallLubricationRegion : public Fix {
+ public:
+  FixWallLubricationRegion(class LAMMPS *, int, char **);
+  ~FixWallLubricationRegion() override;
+
+  void post_constructor() override;
+  int setmask() override;
+  void init() override;
+  void setup_pre_force(int) override;
+  void setup(int) override;
+  void min_setup(int) override;
+  void pre_force(int) override;
+  void post_force(int) override;
+  void min_post_force(int) override;
+  void reset_dt() override;
+  double compute_scalar() override;
+  double compute_vector(int) override;
+
+  // Per-atom friction history per region face (fix_wall_lubrication_region_history.cpp).
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  double memory_usage() override;
+  // The region's motion of the last step (for a run that continues across a restart).
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+
+  bool wet() const { return coeffs.wet(); }
+  // The many-body film budget, as fix wall/lubrication (pair_style lubricated/springdashpot
+  // sums these with its own loads).
+  void add_film_loads(double *load, int nlocal) const;
+  void add_film_share_bounds(double *bound, int nlocal) const;
+
+  // Largest film radius against a concave surface, in sphere radii: R_f <= 4 R keeps the
+  // search cutoff and the budget's bounds finite (a sphere region of radius >= 4/3 R, a
+  // cylinder of radius >= 16/15 R); a wet sphere nearly filling a concave region is an error.
+  static constexpr double MAX_FILM_RATIO = 4.0;
+
+ protected:
+  lubricated::Coefficients coeffs;
+  lubricated::ContactModel model;    // derived from coeffs and dt
+  std::string region_id;
+  class Region *region = nullptr;
+  enum class Shape { flat, sphere, cylinder } shape = Shape::flat;    // how contact radii read
+
+  // The region's rigid motion over the last step, from its displacement and angle (public
+  // members of Region) differenced over the step; kept for a set-up that continues the run.
+  lubricated::RigidWallMotion motion;
+  double last_displacement[4] = {0.0, 0.0, 0.0, 0.0};    // dx dy dz theta at last_step
+  bigint last_step = -1;
+  void update_motion();
+
+  // Per atom: tmax slots of [face id + 1 (0: free), elongation x y z, touched flag].
+  static constexpr int SLOT = 5;
+  int slots = 0;    // region->tmax
+  double **history = nullptr;
+  bool keeps_history() const { return coeffs.friction > 0.0; }
+  std::vector<int> faces;                   // the faces near the atom being evaluated
+  double *history_slot(int i, int face);    // its slot, taken (zeroed) when it has none
+  void forget_slot(int i, int face);
+  void release_other_slots(int i, const int *near, int n);
+
+  // energy, force of the wall on the group x y z, its torque about the reference point x y z
+  double local_sums[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  double global_sums[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  bool sums_reduced = false;
+  void add_to_sums(const double *x, const lubricated::Vec3 &force, const lubricated::Vec3 &torque);
+
+  class FixNVESphereMidpoint *midpoint = nullptr;
+  class FixStepVelocity *step_velocity = nullptr;
+  class PairLubricatedSpringDashpot *pair = nullptr;
+  // Deferred films (a run: computed in pre_force, applied in post_force within the budget):
+  // per owned atom the normal films' force x y z, their summed share, and with the shear film
+  // its force x y z and torque x y z.
+  std::vector<double> film_force, film_load, shear_film;
+  bool films_pending = false, shear_pending = false;
+  ContactMass contact_mass;
+  std::vector<double> inverse_mass;
+  void compute_walls(bool defer_films);
+  void contacts_of_atom(int i, double mass, double **v, double **omega, bool defer_films, double kick_time,
+                        lubricated::Evaluation when);
+  lubricated::FilmRadius film_radius(double sphere_radius, double contact_radius) const;
+  void apply_films();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
