@@ -175,3 +175,97 @@ def test_oscillating_fluid(lmp, history):
     assert abs(expected) > 1.3
     assert abs(measured) == pytest.approx(abs(expected), rel=1e-2)
     assert cmath.phase(measured) == pytest.approx(cmath.phase(expected), abs=1e-2)
+
+
+HISTORY = "added_mass 0.5 history yes window 5 tail 8"
+
+
+def history_scene(steps, extra_run=""):
+    """The heavy sphere of Basset's problem, crossing x = 0 (the ranks' boundary on 2 ranks)
+    while its history builds up, and a second sphere at rest."""
+    force, mass, beta, _ = basset_problem(2500.0)
+    text = scene(2500.0, HISTORY, mass / beta / 50, steps, 10 ** 6, x0=-3e-7)
+    return text.replace(f"run {steps}\n", f"run {steps}\n{extra_run}") + dump_state(2)
+
+
+def test_two_ranks_agree_and_the_history_migrates(lmp):
+    serial = lmp(history_scene(600))
+    assert serial["x1"][0] > 1e-8    # crossed the boundary
+    parallel = lmp(history_scene(600), nprocs=2)
+    assert "2 by 1 by 1 MPI processor grid" in lmp.log
+    for key in serial:
+        assert parallel[key] == pytest.approx(serial[key], rel=1e-10, abs=1e-18), key
+
+
+RESTARTED = """plugin load ${plugin}
+read_restart mid.restart
+neigh_modify every 1 delay 0 check no
+comm_modify vel yes
+fix nve all nve/sphere
+fix weight all gravity 9.81 vector 1 0 0
+fix {id} all fluid/drag viscosity {mu} density {rho_f} law stokes buoyancy 9.81 0 0 {extra}
+run 300
+"""
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_restart_continues_the_history_exactly(lmp, nprocs):
+    """run 600 == run 300; write_restart; (new process) read_restart; run 300 == run 300; run 300,
+    to 1e-12: the window, the tail modes and the step under way travel in the restart file. A
+    fix of another ID (its history lost) differs: the test can fail."""
+    whole = lmp(history_scene(600), nprocs=nprocs)
+    split = lmp(history_scene(300, "write_restart mid.restart\nrun 300\n"), nprocs=nprocs)
+    restarted_script = RESTARTED.replace("{mu}", repr(MU)).replace("{rho_f}", repr(RHO_F)).replace(
+        "{extra}", HISTORY)
+    restarted = lmp(restarted_script.replace("{id}", "fluid") + dump_state(2), nprocs=nprocs, name="in.restart")
+    fresh = lmp(restarted_script.replace("{id}", "other") + dump_state(2), nprocs=nprocs, name="in.fresh")
+    for key in ("x1", "v1", "x2", "v2"):
+        assert split[key] == pytest.approx(whole[key], rel=1e-12, abs=1e-18), key
+        assert restarted[key] == pytest.approx(whole[key], rel=1e-12, abs=1e-18), key
+    assert fresh["v1"][0] != pytest.approx(whole["v1"][0], rel=1e-6)
+
+
+def test_magnus_lift_of_a_spinning_sphere(lmp):
+    """Rubinow & Keller: a sphere spinning at omega z in a fluid moving at U x feels
+    pi R^3 rho_f (w x Omega) = -pi R^3 rho_f U omega y at rest (the fix's global vector)."""
+    u, omega = 0.01, 50.0
+    script = scene(1000.0, f"velocity {u} 0 0 magnus yes", 1e-5, 0, 1, gravity=False).replace(
+        "run 0", f"set atom 1 omega 0 0 {omega}\nset atom 2 omega 0 0 0\nrun 0\n"
+        'print "RESULT lift $(f_fluid[1]:%.15g) $(f_fluid[2]:%.15g) $(f_fluid[3]:%.15g)"')
+    lift = lmp(script)["lift"]
+    beta = 3 * math.pi * MU * D
+    assert lift[0] == pytest.approx(2 * beta * u, rel=1e-12)    # drag on both spheres
+    assert lift[1] == pytest.approx(-math.pi * (D / 2) ** 3 * RHO_F * u * omega, rel=1e-12)
+    assert lift[2] == 0.0
+
+
+@pytest.mark.parametrize("extra,fragment", [
+    ("added_mass -0.5", "added_mass C_m = -0.5 is out of range (allowed: 0 <= C_m <= 10"),
+    ("history maybe", "Expected boolean parameter instead of 'maybe'"),
+    ("history yes window 0", "window N_w = 0 is out of range (allowed: 1 <= N_w <= 1000)"),
+    ("history yes tail 65", "tail M = 65 is out of range (allowed: 0 <= M <= 64)"),
+    ("pressure yes velocity v_ux 0 0", "needs the acceleration keyword"),
+    ("added_mass 0.5 acceleration v_nothing 0 0", "variable nothing for the fluid acceleration does not exist"),
+    ("magnus", "missing value(s) for keyword magnus"),
+])
+def test_bad_input(lmp, extra, fragment):
+    script = scene(2500.0, extra, 1e-6, 1, 1).replace("fix nve all", "variable ux equal 0.0\nfix nve all")
+    lmp(script, check=False)
+    error = next(line for line in lmp.log.splitlines() if "ERROR" in line)
+    assert fragment in error, error
+
+
+def test_fluid_inertia_needs_the_density(lmp):
+    script = scene(2500.0, "history yes", 1e-6, 1, 1, gravity=False).replace(
+        f"density {RHO_F!r}", "density 0")
+    lmp(script, check=False)
+    assert "need the fluid density" in next(line for line in lmp.log.splitlines() if "ERROR" in line)
+
+
+def test_a_force_fix_after_the_added_mass_is_an_error(lmp):
+    """The added mass divides the total force: a force added after it would be wrong."""
+    script = scene(2500.0, "added_mass 0.5", 1e-6, 1, 1).replace(
+        "timestep", "fix late all addforce 0 0 1e-9\ntimestep")
+    lmp(script, check=False)
+    error = next(line for line in lmp.log.splitlines() if "ERROR" in line)
+    assert "must be the last fix that adds forces: define fix late (style addforce) before it" in error
