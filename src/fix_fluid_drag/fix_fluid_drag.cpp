@@ -282,10 +282,10 @@ void FixFluidDrag::post_force(int /*vflag*/)
     for (int d = 0; d < 3; d++)
       fluid_accel[d] = fluid_scale * (acceleration[d].per_atom ? atom_acceleration[d][i] : acceleration[d].value);
     const double m_a = added_mass * buoyant_volume;
-    const double m_h = history
-        ? basset.known_force(history_state[i], lub::basset_coefficient(diameter, model.density, model.viscosity),
-                             dt, known)
-        : 0.0;
+    const double m_h =
+        history ? basset.known_force(history_state[i],
+                                     lub::basset_coefficient(diameter, model.density, model.viscosity), dt, known)
+                : 0.0;
     const double m_eff = rmass[i] + m_a + m_h;
     beta = std::min(beta, m_eff / dt);    // the cap above, for the mass that the drag accelerates
     if (magnus) lub::magnus_force(radius[i], model.density, omega[i], slip, lift);

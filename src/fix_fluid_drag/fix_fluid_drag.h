@@ -68,10 +68,10 @@ class FixFluidDrag : public Fix {
   bool pressure = false;      // rho_f V Du_f/Dt
   bool history = false;       // Basset-Boussinesq
   bool magnus = false;        // Rubinow-Keller lift
-  int history_window = 10, history_modes = 16;
+  int history_window = 10, history_modes = 20;
   lubricated::BassetHistory basset;
   double **history_state = nullptr;
-  double history_dt = 0.0;     // the step the tail is laid out for (0: not yet)
+  double history_dt = 0.0;    // the step the tail is laid out for (0: not yet)
   bool dt_warned = false;
 
   std::vector<double> bin_solid;    // solid volume fraction per bin

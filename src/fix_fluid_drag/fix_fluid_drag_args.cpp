@@ -113,8 +113,8 @@ void FixFluidDrag::parse(int narg, char **arg)
       need(iarg, 1);
       added_mass = number(iarg + 1);
       if (!(added_mass >= 0.0 && added_mass <= 10.0))
-        error->all(FLERR, "{}: added_mass C_m = {} is out of range (allowed: 0 <= C_m <= 10; 0.5 for a sphere)",
-                   STYLE, arg[iarg + 1]);
+        error->all(FLERR, "{}: added_mass C_m = {} is out of range (allowed: 0 <= C_m <= 10; 0.5 for a sphere)", STYLE,
+                   arg[iarg + 1]);
       iarg += 2;
     } else if (key == "pressure") {
       need(iarg, 1);
@@ -133,8 +133,8 @@ void FixFluidDrag::parse(int narg, char **arg)
     } else if (key == "tail") {
       need(iarg, 1);
       history_modes = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (history_modes < 0 || history_modes > 64)
-        error->all(FLERR, "{}: tail M = {} is out of range (allowed: 0 <= M <= 64)", STYLE, history_modes);
+      if (history_modes != 0 && (history_modes < 8 || history_modes > 64))
+        error->all(FLERR, "{}: tail M = {} is out of range (allowed: 0 or 8 <= M <= 64)", STYLE, history_modes);
       iarg += 2;
     } else if (key == "magnus") {
       need(iarg, 1);
@@ -152,8 +152,7 @@ void FixFluidDrag::parse(int narg, char **arg)
   if ((gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0) && model.density == 0.0)
     error->all(FLERR, "{}: buoyancy needs the fluid density (density keyword)", STYLE);
   if (fluid_inertia() && model.density == 0.0)
-    error->all(FLERR, "{}: added_mass, pressure, history and magnus need the fluid density (density keyword)",
-               STYLE);
+    error->all(FLERR, "{}: added_mass, pressure, history and magnus need the fluid density (density keyword)", STYLE);
   bool varying = false;
   for (const auto &c : velocity)
     varying = varying || !c.name.empty();

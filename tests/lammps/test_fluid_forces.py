@@ -177,7 +177,7 @@ def test_oscillating_fluid(lmp, history):
     assert cmath.phase(measured) == pytest.approx(cmath.phase(expected), abs=1e-2)
 
 
-HISTORY = "added_mass 0.5 history yes window 5 tail 8"
+HISTORY = "added_mass 0.5 history yes window 5 tail 10"
 
 
 def history_scene(steps, extra_run=""):
@@ -243,7 +243,8 @@ def test_magnus_lift_of_a_spinning_sphere(lmp):
     ("added_mass -0.5", "added_mass C_m = -0.5 is out of range (allowed: 0 <= C_m <= 10"),
     ("history maybe", "Expected boolean parameter instead of 'maybe'"),
     ("history yes window 0", "window N_w = 0 is out of range (allowed: 1 <= N_w <= 1000)"),
-    ("history yes tail 65", "tail M = 65 is out of range (allowed: 0 <= M <= 64)"),
+    ("history yes tail 65", "tail M = 65 is out of range (allowed: 0 or 8 <= M <= 64)"),
+    ("history yes tail 4", "tail M = 4 is out of range"),
     ("pressure yes velocity v_ux 0 0", "needs the acceleration keyword"),
     ("added_mass 0.5 acceleration v_nothing 0 0", "variable nothing for the fluid acceleration does not exist"),
     ("magnus", "missing value(s) for keyword magnus"),
