@@ -55,6 +55,8 @@ FixFluidDrag::~FixFluidDrag()
     memory->destroy(p);
   for (auto &p : atom_acceleration)
     memory->destroy(p);
+  for (auto &p : atom_vorticity)
+    memory->destroy(p);
   if (history) {
     atom->delete_callback(id, Atom::GROW);
     atom->delete_callback(id, Atom::RESTART);
@@ -74,11 +76,11 @@ bool FixFluidDrag::needs_fraction() const
 
 void FixFluidDrag::init()
 {
-  for (Component *set : {velocity, acceleration})
+  for (Component *set : {velocity, acceleration, vorticity})
     for (int d = 0; d < 3; d++) {
       Component &c = set[d];
       if (c.name.empty()) continue;
-      const char *what = set == velocity ? "velocity" : "acceleration";
+      const char *what = set == velocity ? "velocity" : (set == acceleration ? "acceleration" : "vorticity");
       c.ivar = input->variable->find(c.name.c_str());
       if (c.ivar < 0) error->all(FLERR, "{}: variable {} for the fluid {} does not exist", STYLE, c.name, what);
       if (input->variable->equalstyle(c.ivar))
@@ -130,7 +132,7 @@ void FixFluidDrag::evaluate(Component *components, double **per_atom)
   }
   if (any_per_atom && atom->nmax > maxatom) {
     maxatom = atom->nmax;
-    for (double **set : {atom_velocity, atom_acceleration})
+    for (double **set : {atom_velocity, atom_acceleration, atom_vorticity})
       for (int d = 0; d < 3; d++) {
         memory->destroy(set[d]);
         memory->create(set[d], maxatom, "fluid/drag:per_atom");
@@ -238,6 +240,7 @@ void FixFluidDrag::post_force(int /*vflag*/)
   evaluate(velocity, atom_velocity);
   const bool inertia = fluid_inertia();
   if (inertia) evaluate(acceleration, atom_acceleration);
+  if (magnus || saffman) evaluate(vorticity, atom_vorticity);
 
   // A set-up that continues the last run drags with the velocities of its last step, as that
   // step did (fix_step_velocity.h, kept where the pair style or a wall fix of this plugin is).
@@ -288,7 +291,22 @@ void FixFluidDrag::post_force(int /*vflag*/)
                 : 0.0;
     const double m_eff = rmass[i] + m_a + m_h;
     beta = std::min(beta, m_eff / dt);    // the cap above, for the mass that the drag accelerates
-    if (magnus) lub::magnus_force(radius[i], model.density, omega[i], slip, lift);
+    if (magnus || saffman) {
+      double curl[3], part[3];
+      for (int d = 0; d < 3; d++)
+        curl[d] = vorticity[d].per_atom ? atom_vorticity[d][i] : vorticity[d].value;
+      if (magnus) {
+        const double spin[3] = {omega[i][0] - 0.5 * curl[0], omega[i][1] - 0.5 * curl[1], omega[i][2] - 0.5 * curl[2]};
+        lub::magnus_force(radius[i], model.density, spin, slip, part);
+        for (int d = 0; d < 3; d++)
+          lift[d] += part[d];
+      }
+      if (saffman) {
+        lub::saffman_force(diameter, model.density, model.viscosity, slip, curl, part);
+        for (int d = 0; d < 3; d++)
+          lift[d] += part[d];
+      }
+    }
     const double undisturbed = pressure ? buoyant_volume : 0.0;
     double accel[3] = {0.0, 0.0, 0.0};
     for (int d = 0; d < 3; d++) {
@@ -325,6 +343,6 @@ double FixFluidDrag::compute_vector(int n)
 
 double FixFluidDrag::memory_usage()
 {
-  return 6.0 * maxatom * sizeof(double) + 2.0 * bin_solid.size() * sizeof(double) +
+  return 9.0 * maxatom * sizeof(double) + 2.0 * bin_solid.size() * sizeof(double) +
          (history ? (double)atom->nmax * basset.size() * sizeof(double) : 0.0);
 }

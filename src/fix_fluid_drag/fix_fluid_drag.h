@@ -2,7 +2,7 @@
    fix fluid/drag: the unresolved fluid acting on finite-size spheres: drag from the slip
    velocity (Stokes or Schiller-Naumann), hindered settling from the local solid fraction
    (Richardson-Zaki or Di Felice) and buoyancy; optionally the fluid's inertia and memory
-   (added mass, undisturbed-flow force, Basset history, Magnus lift). Physics in
+   (added mass, undisturbed-flow force, Basset history, Magnus and Saffman lift). Physics in
    src/lubricated/drag.h and src/lubricated/fluid_inertia.h. Keywords parsed in
    fix_fluid_drag_args.cpp, the per-atom history in fix_fluid_drag_history.cpp.
 ------------------------------------------------------------------------- */
@@ -55,7 +55,7 @@ class FixFluidDrag : public Fix {
     int ivar = -1;
     bool per_atom = false;
   };
-  Component velocity[3], acceleration[3];    // u_f and Du_f/Dt
+  Component velocity[3], acceleration[3], vorticity[3];    // u_f, Du_f/Dt, curl u_f
   bool acceleration_given = false;
   bool superficial = false;
   double gravity[3] = {0.0, 0.0, 0.0};    // for buoyancy; zero vector: none
@@ -68,6 +68,7 @@ class FixFluidDrag : public Fix {
   bool pressure = false;      // rho_f V Du_f/Dt
   bool history = false;       // Basset-Boussinesq
   bool magnus = false;        // Rubinow-Keller lift
+  bool saffman = false;       // Saffman-Mei shear lift
   int history_window = 10, history_modes = 20;
   lubricated::BassetHistory basset;
   double **history_state = nullptr;
@@ -78,6 +79,7 @@ class FixFluidDrag : public Fix {
   std::vector<double> local_sum;
   double *atom_velocity[3] = {nullptr, nullptr, nullptr};
   double *atom_acceleration[3] = {nullptr, nullptr, nullptr};
+  double *atom_vorticity[3] = {nullptr, nullptr, nullptr};
   int maxatom = 0;
   bigint last_fraction_step = -1;
   double totals[4] = {0.0, 0.0, 0.0, 0.0}, totals_all[4] = {0.0, 0.0, 0.0, 0.0};
@@ -85,7 +87,7 @@ class FixFluidDrag : public Fix {
 
   void parse(int narg, char **arg);
   bool needs_fraction() const;
-  bool fluid_inertia() const { return added_mass > 0.0 || pressure || history || magnus; }
+  bool fluid_inertia() const { return added_mass > 0.0 || pressure || history || magnus || saffman; }
   bool solves_acceleration() const { return added_mass > 0.0 || history; }
   void check_last_force_fix();
   void evaluate(Component *components, double **per_atom);

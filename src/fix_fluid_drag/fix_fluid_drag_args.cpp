@@ -6,7 +6,7 @@
      velocity ux uy uz (numbers or v_name) | superficial yes|no | buoyancy gx gy gz
      bins nx ny nz | every N
      added_mass C_m | pressure yes|no | acceleration ax ay az (numbers or v_name)
-     history yes|no | window N_w | tail M | magnus yes|no
+     history yes|no | window N_w | tail M | magnus yes|no | vorticity wx wy wz | saffman yes|no
 ------------------------------------------------------------------------- */
 
 #include "fix_fluid_drag.h"
@@ -136,6 +136,14 @@ void FixFluidDrag::parse(int narg, char **arg)
       if (history_modes != 0 && (history_modes < 8 || history_modes > 64))
         error->all(FLERR, "{}: tail M = {} is out of range (allowed: 0 or 8 <= M <= 64)", STYLE, history_modes);
       iarg += 2;
+    } else if (key == "vorticity") {
+      need(iarg, 3);
+      components(iarg + 1, vorticity);
+      iarg += 4;
+    } else if (key == "saffman") {
+      need(iarg, 1);
+      saffman = yes_no(iarg + 1);
+      iarg += 2;
     } else if (key == "magnus") {
       need(iarg, 1);
       magnus = yes_no(iarg + 1);
@@ -144,7 +152,7 @@ void FixFluidDrag::parse(int narg, char **arg)
       error->all(FLERR,
                  "{}: unknown keyword '{}' (expected viscosity, density, law, hindrance, velocity, "
                  "superficial, buoyancy, bins, every, added_mass, pressure, acceleration, history, "
-                 "window, tail or magnus)",
+                 "window, tail, magnus, vorticity or saffman)",
                  STYLE, key);
     }
   }
@@ -152,7 +160,8 @@ void FixFluidDrag::parse(int narg, char **arg)
   if ((gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0) && model.density == 0.0)
     error->all(FLERR, "{}: buoyancy needs the fluid density (density keyword)", STYLE);
   if (fluid_inertia() && model.density == 0.0)
-    error->all(FLERR, "{}: added_mass, pressure, history and magnus need the fluid density (density keyword)", STYLE);
+    error->all(FLERR, "{}: added_mass, pressure, history, magnus and saffman need the fluid density (density keyword)",
+               STYLE);
   bool varying = false;
   for (const auto &c : velocity)
     varying = varying || !c.name.empty();

@@ -1,6 +1,6 @@
 // Fluid inertia and memory on one sphere, for the drag fix (doc/model.rst "Fluid inertia and
 // memory", doc/fix_fluid_drag.rst): the added mass, the undisturbed-flow (pressure-gradient)
-// force, the Basset-Boussinesq history force and the Magnus lift of the Maxey-Riley-Gatignol
+// force, the Basset-Boussinesq history force and the Magnus and Saffman lifts of the Maxey-Riley-Gatignol
 // equation (Maxey & Riley 1983, Gatignol 1983) for a sphere of mass m, volume V, diameter d:
 //
 //   m dv/dt = F + rho_f V Du/Dt + C_m rho_f V (Du/Dt - dv/dt)
@@ -172,13 +172,46 @@ class BassetHistory {
 
 // Magnus lift of a spinning sphere, Rubinow & Keller, J. Fluid Mech. 11, 447 (1961), at low
 // Reynolds number: F = pi R^3 rho_f Omega x (v - u) = pi R^3 rho_f (w x Omega), Omega the
-// spin relative to the fluid (the fluid's own rotation is zero for a uniform flow).
+// spin relative to the fluid, omega_p - (curl u) / 2.
 inline void magnus_force(double radius, double fluid_density, const double *spin, const double *slip, double *force)
 {
   const double c = pi * radius * radius * radius * fluid_density;
   force[0] = c * (slip[1] * spin[2] - slip[2] * spin[1]);
   force[1] = c * (slip[2] * spin[0] - slip[0] * spin[2]);
   force[2] = c * (slip[0] * spin[1] - slip[1] * spin[0]);
+}
+
+// Saffman's shear lift, Saffman, J. Fluid Mech. 22, 385 (1965) (corrigendum 31, 624 (1968)),
+// in the vector form F = 1.615 d^2 sqrt(rho_f mu_f / |omega_f|) C (w x omega_f) for a sphere
+// with slip w in a fluid of vorticity omega_f = curl u (Crowe, Sommerfeld & Tsuji, Multiphase
+// Flows with Droplets and Particles (1998), ch. 4), towards the faster fluid for a sphere that
+// lags it. C is Mei's finite-Re correction (Mei, Int. J. Multiphase Flow 18, 145 (1992)):
+// with Re_p = rho_f |w| d / mu_f, Re_s = rho_f |omega_f| d^2 / mu_f, b = Re_s / (2 Re_p),
+//   C = (1 - 0.3314 b^1/2) exp(-Re_p / 10) + 0.3314 b^1/2   (Re_p <= 40),
+//   C = 0.0524 (b Re_p)^1/2                                  (Re_p > 40); C -> 1 as Re_p -> 0.
+inline double saffman_mei_correction(double re_p, double re_s)
+{
+  if (re_p <= 0.0) return 1.0;
+  const double b = re_s / (2.0 * re_p);
+  if (re_p <= 40.0) return (1.0 - 0.3314 * std::sqrt(b)) * std::exp(-0.1 * re_p) + 0.3314 * std::sqrt(b);
+  return 0.0524 * std::sqrt(b * re_p);
+}
+
+inline void saffman_force(double diameter, double fluid_density, double viscosity, const double *slip,
+                          const double *vorticity, double *force)
+{
+  force[0] = force[1] = force[2] = 0.0;
+  const double vort =
+      std::sqrt(vorticity[0] * vorticity[0] + vorticity[1] * vorticity[1] + vorticity[2] * vorticity[2]);
+  if (vort == 0.0) return;
+  const double speed = std::sqrt(slip[0] * slip[0] + slip[1] * slip[1] + slip[2] * slip[2]);
+  const double re_p = fluid_density * speed * diameter / viscosity;
+  const double re_s = fluid_density * vort * diameter * diameter / viscosity;
+  const double c =
+      1.615 * diameter * diameter * std::sqrt(fluid_density * viscosity / vort) * saffman_mei_correction(re_p, re_s);
+  force[0] = c * (slip[1] * vorticity[2] - slip[2] * vorticity[1]);
+  force[1] = c * (slip[2] * vorticity[0] - slip[0] * vorticity[2]);
+  force[2] = c * (slip[0] * vorticity[1] - slip[1] * vorticity[0]);
 }
 
 }    // namespace lubricated

@@ -100,3 +100,27 @@ TEST(FluidInertia, MagnusLiftOfABackspinningSphereIsUpward)
   EXPECT_EQ(f[0], 0.0);
   EXPECT_EQ(f[1], 0.0);
 }
+
+TEST(FluidInertia, SaffmanLiftPushesALaggingSphereTowardsTheFasterFluid)
+{
+  // Shear u = gamma y x: curl u = -gamma z. A sphere lagging the fluid (w along +x) is
+  // lifted to +y; at vanishing Re_p Mei's factor is 1 and the force Saffman's.
+  const double d = 1e-4, rho = 1000.0, mu = 1e-3, gamma = 100.0, w = 1e-6;
+  const double slip[3] = {w, 0.0, 0.0}, curl[3] = {0.0, 0.0, -gamma};
+  double f[3];
+  saffman_force(d, rho, mu, slip, curl, f);
+  const double re_p = rho * w * d / mu, re_s = rho * gamma * d * d / mu;
+  EXPECT_NEAR(saffman_mei_correction(re_p, re_s), 1.0, 1e-2);
+  EXPECT_NEAR(f[1], 1.615 * d * d * std::sqrt(rho * mu / gamma) * saffman_mei_correction(re_p, re_s) * w * gamma,
+              1e-12 * std::abs(f[1]));
+  EXPECT_GT(f[1], 0.0);
+  EXPECT_EQ(f[0], 0.0);
+  EXPECT_EQ(f[2], 0.0);
+  // No vorticity, no lift; Mei's factor falls with Re_p (0.0524 (b Re_p)^1/2 above 40).
+  const double still[3] = {0.0, 0.0, 0.0};
+  saffman_force(d, rho, mu, slip, still, f);
+  EXPECT_EQ(f[1], 0.0);
+  EXPECT_EQ(saffman_mei_correction(0.0, 1.0), 1.0);
+  EXPECT_LT(saffman_mei_correction(20.0, 1.0), 0.3);
+  EXPECT_NEAR(saffman_mei_correction(100.0, 2.0), 0.0524 * std::sqrt(1.0), 1e-15);
+}

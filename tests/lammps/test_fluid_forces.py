@@ -239,6 +239,27 @@ def test_magnus_lift_of_a_spinning_sphere(lmp):
     assert lift[2] == 0.0
 
 
+def test_saffman_lift_and_the_fluids_rotation(lmp):
+    """Spheres at rest in a fluid moving at U x with the vorticity of the shear u = gamma y x,
+    curl u = -gamma z: Saffman's lift with Mei's correction, 1.615 d^2 sqrt(rho mu / gamma) C U
+    gamma, along +y (towards the faster fluid for the lagging spheres). Sphere 1 spins with
+    the fluid (omega = curl u / 2): no Magnus lift; sphere 2 does not spin, so relative to the
+    fluid it spins at Omega = -curl u / 2 = gamma / 2 z: Magnus pi R^3 rho (w x Omega), -y."""
+    u, gamma = 0.01, 40.0
+    script = scene(1000.0, f"velocity {u} 0 0 vorticity 0 0 {-gamma} saffman yes magnus yes", 1e-5, 0, 1,
+                   gravity=False).replace(
+        "run 0", f"set atom 1 omega 0 0 {-gamma / 2}\nset atom 2 omega 0 0 0\nrun 0\n"
+        'print "RESULT lift $(f_fluid[1]:%.15g) $(f_fluid[2]:%.15g) $(f_fluid[3]:%.15g)"')
+    lift = lmp(script)["lift"]
+    re_p, re_s = RHO_F * u * D / MU, RHO_F * gamma * D * D / MU
+    b = re_s / (2 * re_p)
+    mei = (1 - 0.3314 * math.sqrt(b)) * math.exp(-re_p / 10) + 0.3314 * math.sqrt(b)
+    saffman = 1.615 * D * D * math.sqrt(RHO_F * MU / gamma) * mei * u * gamma
+    magnus = -math.pi * (D / 2) ** 3 * RHO_F * u * gamma / 2
+    assert lift[1] == pytest.approx(2 * saffman + magnus, rel=1e-12)
+    assert 2 * saffman > 10 * abs(magnus)
+
+
 @pytest.mark.parametrize("extra,fragment", [
     ("added_mass -0.5", "added_mass C_m = -0.5 is out of range (allowed: 0 <= C_m <= 10"),
     ("history maybe", "Expected boolean parameter instead of 'maybe'"),
@@ -248,6 +269,7 @@ def test_magnus_lift_of_a_spinning_sphere(lmp):
     ("pressure yes velocity v_ux 0 0", "needs the acceleration keyword"),
     ("added_mass 0.5 acceleration v_nothing 0 0", "variable nothing for the fluid acceleration does not exist"),
     ("magnus", "missing value(s) for keyword magnus"),
+    ("saffman yes vorticity v_nothing 0 0", "variable nothing for the fluid vorticity does not exist"),
 ])
 def test_bad_input(lmp, extra, fragment):
     script = scene(2500.0, extra, 1e-6, 1, 1).replace("fix nve all", "variable ux equal 0.0\nfix nve all")
