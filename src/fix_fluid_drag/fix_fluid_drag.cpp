@@ -46,7 +46,10 @@ FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
   dynamic_group_allow = 1;
   bin_solid.assign(nbins[0] * nbins[1] * nbins[2], 0.0);
   local_sum.assign(bin_solid.size(), 0.0);
-  if (history) setup_history();
+  if (history) {
+    dynamic_group_allow = 0;    // an atom's history is kept while it is in the group
+    setup_history();
+  }
 }
 
 FixFluidDrag::~FixFluidDrag()
