@@ -1,10 +1,7 @@
 /* ----------------------------------------------------------------------
    fix fluid/drag (see doc/fix_fluid_drag.rst)
 
-   fix ID group fluid/drag viscosity mu keyword value ...
-     density rho_f | law stokes|schiller-naumann | hindrance none|richardson-zaki n|di-felice
-     velocity ux uy uz (numbers or v_name) | superficial yes|no | buoyancy gx gy gz
-     bins nx ny nz | every N
+   fix ID group fluid/drag viscosity mu keyword value ... (keywords: fix_fluid_drag_args.cpp)
 ------------------------------------------------------------------------- */
 
 #include "fix_fluid_drag.h"
@@ -14,6 +11,7 @@
 #include "unit_style/unit_style.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "input.h"
@@ -38,99 +36,7 @@ FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
   if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR, "{} requires atom_style sphere (per-atom radius and rmass)", STYLE);
 
-  bool have_viscosity = false;
-  auto need = [&](int iarg, int n) {
-    if (iarg + n >= narg) error->all(FLERR, "{}: missing value(s) for keyword {}", STYLE, arg[iarg]);
-  };
-  auto number = [&](int iarg) { return utils::numeric(FLERR, arg[iarg], false, lmp); };
-  int iarg = 3;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (key == "viscosity") {
-      need(iarg, 1);
-      model.viscosity = number(iarg + 1);
-      if (!(model.viscosity > 0.0))
-        error->all(FLERR, "{}: viscosity = {} is out of range (allowed: mu_f > 0)", STYLE, arg[iarg + 1]);
-      have_viscosity = true;
-      iarg += 2;
-    } else if (key == "density") {
-      need(iarg, 1);
-      model.density = number(iarg + 1);
-      if (!(model.density >= 0.0))
-        error->all(FLERR, "{}: density = {} is out of range (allowed: rho_f >= 0)", STYLE, arg[iarg + 1]);
-      iarg += 2;
-    } else if (key == "law") {
-      need(iarg, 1);
-      const std::string law = arg[iarg + 1];
-      if (law == "stokes")
-        model.law = lub::DragLaw::stokes;
-      else if (law == "schiller-naumann")
-        model.law = lub::DragLaw::schiller_naumann;
-      else
-        error->all(FLERR, "{}: law must be stokes or schiller-naumann, got '{}'", STYLE, law);
-      iarg += 2;
-    } else if (key == "hindrance") {
-      need(iarg, 1);
-      const std::string h = arg[iarg + 1];
-      iarg += 2;
-      if (h == "none")
-        model.hindrance = lub::Hindrance::none;
-      else if (h == "di-felice")
-        model.hindrance = lub::Hindrance::di_felice;
-      else if (h == "richardson-zaki") {
-        need(iarg - 1, 1);
-        model.hindrance = lub::Hindrance::richardson_zaki;
-        model.rz_exponent = number(iarg);
-        if (!(model.rz_exponent >= 1.0 && model.rz_exponent <= 10.0))
-          error->all(FLERR, "{}: richardson-zaki n = {} is out of range (allowed: 1 <= n <= 10)", STYLE, arg[iarg]);
-        iarg += 1;
-      } else
-        error->all(FLERR, "{}: hindrance must be none, richardson-zaki n or di-felice, got '{}'", STYLE, h);
-    } else if (key == "velocity") {
-      need(iarg, 3);
-      for (int d = 0; d < 3; d++) {
-        if (utils::strmatch(arg[iarg + 1 + d], "^v_"))
-          velocity[d].name = arg[iarg + 1 + d] + 2;
-        else
-          velocity[d].value = number(iarg + 1 + d);
-      }
-      iarg += 4;
-    } else if (key == "superficial") {
-      need(iarg, 1);
-      superficial = utils::logical(FLERR, arg[iarg + 1], false, lmp) == 1;
-      iarg += 2;
-    } else if (key == "buoyancy") {
-      need(iarg, 3);
-      for (int d = 0; d < 3; d++)
-        gravity[d] = number(iarg + 1 + d);
-      iarg += 4;
-    } else if (key == "bins") {
-      need(iarg, 3);
-      for (int d = 0; d < 3; d++) {
-        nbins[d] = utils::inumeric(FLERR, arg[iarg + 1 + d], false, lmp);
-        if (nbins[d] < 1) error->all(FLERR, "{}: bins {} is out of range (allowed: >= 1)", STYLE, nbins[d]);
-      }
-      bins_given = true;
-      iarg += 4;
-    } else if (key == "every") {
-      need(iarg, 1);
-      every = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (every < 1) error->all(FLERR, "{}: every = {} is out of range (allowed: N >= 1)", STYLE, every);
-      iarg += 2;
-    } else {
-      error->all(FLERR,
-                 "{}: unknown keyword '{}' (expected viscosity, density, law, hindrance, "
-                 "velocity, superficial, buoyancy, bins or every)",
-                 STYLE, key);
-    }
-  }
-  if (!have_viscosity) error->all(FLERR, "{}: the viscosity keyword is required", STYLE);
-  if ((gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0) && model.density == 0.0)
-    error->all(FLERR, "{}: buoyancy needs the fluid density (density keyword)", STYLE);
-  if (model.density == 0.0 && model.law == lub::DragLaw::schiller_naumann)
-    model.law = lub::DragLaw::stokes;    // Re = 0 without a fluid density
-  if (needs_fraction() && !bins_given)
-    error->all(FLERR, "{}: hindrance and superficial need the bins keyword for the solid fraction", STYLE);
+  parse(narg, arg);
   if (domain->triclinic) error->all(FLERR, "{} does not support triclinic boxes", STYLE);
 
   vector_flag = 1;    // total fluid force on the group (3), mean solid fraction of occupied bins
@@ -140,17 +46,30 @@ FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
   dynamic_group_allow = 1;
   bin_solid.assign(nbins[0] * nbins[1] * nbins[2], 0.0);
   local_sum.assign(bin_solid.size(), 0.0);
+  if (history) {
+    dynamic_group_allow = 0;    // an atom's history is kept while it is in the group
+    setup_history();
+  }
 }
 
 FixFluidDrag::~FixFluidDrag()
 {
   for (auto &p : atom_velocity)
     memory->destroy(p);
+  for (auto &p : atom_acceleration)
+    memory->destroy(p);
+  for (auto &p : atom_vorticity)
+    memory->destroy(p);
+  if (history) {
+    atom->delete_callback(id, Atom::GROW);
+    atom->delete_callback(id, Atom::RESTART);
+    memory->destroy(history_state);
+  }
 }
 
 int FixFluidDrag::setmask()
 {
-  return POST_FORCE;
+  return POST_FORCE | (history ? PRE_FORCE : 0);
 }
 
 bool FixFluidDrag::needs_fraction() const
@@ -160,19 +79,79 @@ bool FixFluidDrag::needs_fraction() const
 
 void FixFluidDrag::init()
 {
-  for (auto &c : velocity) {
-    if (c.name.empty()) continue;
-    c.ivar = input->variable->find(c.name.c_str());
-    if (c.ivar < 0) error->all(FLERR, "{}: variable {} for the fluid velocity does not exist", STYLE, c.name);
-    if (input->variable->equalstyle(c.ivar))
-      c.per_atom = false;
-    else if (input->variable->atomstyle(c.ivar))
-      c.per_atom = true;
-    else
-      error->all(FLERR, "{}: variable {} must be equal-style or atom-style", STYLE, c.name);
-  }
+  for (Component *set : {velocity, acceleration, vorticity})
+    for (int d = 0; d < 3; d++) {
+      Component &c = set[d];
+      if (c.name.empty()) continue;
+      const char *what = set == velocity ? "velocity" : (set == acceleration ? "acceleration" : "vorticity");
+      c.ivar = input->variable->find(c.name.c_str());
+      if (c.ivar < 0) error->all(FLERR, "{}: variable {} for the fluid {} does not exist", STYLE, c.name, what);
+      if (input->variable->equalstyle(c.ivar))
+        c.per_atom = false;
+      else if (input->variable->atomstyle(c.ivar))
+        c.per_atom = true;
+      else
+        error->all(FLERR, "{}: variable {} must be equal-style or atom-style", STYLE, c.name);
+    }
   last_fraction_step = -1;
+  if (history && history_dt == 0.0) history_dt = update->dt;    // the tail's layout, kept
+  if (history) basset = lub::BassetHistory(history_window, history_modes, history_dt);
   step_velocity = dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
+  if (solves_acceleration()) check_last_force_fix();
+  if (history && history_dt > 0.0 && update->dt != history_dt && !dt_warned && comm->me == 0) {
+    error->warning(FLERR,
+                   "{}: the time step changed from {} to {}: the Basset window is re-weighted, its "
+                   "exponential tail keeps the old step (approximate history)",
+                   STYLE, history_dt, update->dt);
+    dt_warned = true;
+  }
+}
+
+// The added mass and the history's current step are solved for with the total force, so no
+// force may be added after this fix's post_force (LAMMPS calls them in the order defined).
+void FixFluidDrag::check_last_force_fix()
+{
+  bool after = false;
+  for (int i = 0; i < modify->nfix; i++) {
+    if (modify->fix[i] == this) {
+      after = true;
+      continue;
+    }
+    if (after && (modify->fmask[i] & POST_FORCE))
+      error->all(FLERR,
+                 "{} with added_mass or history must be the last fix that adds forces: define fix {} "
+                 "(style {}) before it",
+                 STYLE, modify->fix[i]->id, modify->fix[i]->style);
+  }
+}
+
+// Values of constants or variables: equal-style into value, atom-style into per_atom.
+void FixFluidDrag::evaluate(Component *components, double **per_atom)
+{
+  bool any_per_atom = false, any_variable = false;
+  for (int d = 0; d < 3; d++) {
+    any_per_atom = any_per_atom || components[d].per_atom;
+    any_variable = any_variable || !components[d].name.empty();
+  }
+  if (any_per_atom && atom->nmax > maxatom) {
+    maxatom = atom->nmax;
+    for (double **set : {atom_velocity, atom_acceleration, atom_vorticity})
+      for (int d = 0; d < 3; d++) {
+        memory->destroy(set[d]);
+        memory->create(set[d], maxatom, "fluid/drag:per_atom");
+      }
+  }
+  if (!any_variable) return;
+  modify->clearstep_compute();
+  for (int d = 0; d < 3; d++) {
+    Component &c = components[d];
+    if (c.name.empty()) continue;
+    if (c.per_atom)
+      input->variable->compute_atom(c.ivar, igroup, per_atom[d], 1, 0);
+    else
+      c.value = input->variable->compute_equal(c.ivar);
+  }
+  modify->addstep_compute(update->ntimestep + 1);
 }
 
 void FixFluidDrag::setup(int vflag)
@@ -260,34 +239,17 @@ void FixFluidDrag::post_force(int /*vflag*/)
   if (needs_fraction() && (last_fraction_step < 0 || update->ntimestep - last_fraction_step >= every))
     update_solid_fraction();
 
-  // Fluid velocity: constants, equal-style or atom-style variables.
-  bool any_per_atom = false;
-  for (auto &c : velocity)
-    any_per_atom = any_per_atom || c.per_atom;
-  if (any_per_atom && atom->nmax > maxatom) {
-    maxatom = atom->nmax;
-    for (auto &p : atom_velocity) {
-      memory->destroy(p);
-      memory->create(p, maxatom, "fluid/drag:velocity");
-    }
-  }
-  if (!velocity[0].name.empty() || !velocity[1].name.empty() || !velocity[2].name.empty()) {
-    modify->clearstep_compute();
-    for (int d = 0; d < 3; d++) {
-      Component &c = velocity[d];
-      if (c.name.empty()) continue;
-      if (c.per_atom)
-        input->variable->compute_atom(c.ivar, igroup, atom_velocity[d], 1, 0);
-      else
-        c.value = input->variable->compute_equal(c.ivar);
-    }
-    modify->addstep_compute(update->ntimestep + 1);
-  }
+  // Fluid velocity and acceleration: constants, equal-style or atom-style variables.
+  evaluate(velocity, atom_velocity);
+  const bool inertia = fluid_inertia();
+  if (inertia) evaluate(acceleration, atom_acceleration);
+  if (magnus || saffman) evaluate(vorticity, atom_vorticity);
 
   // A set-up that continues the last run drags with the velocities of its last step, as that
   // step did (fix_step_velocity.h, kept where the pair style or a wall fix of this plugin is).
   const bool continued = step_velocity && step_velocity->continues();
   double **x = atom->x, **v = continued ? step_velocity->velocity() : atom->v, **f = atom->f;
+  double **omega = continued ? step_velocity->spin() : atom->omega;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *mask = atom->mask;
   const double dt = update->dt;
@@ -307,14 +269,64 @@ void FixFluidDrag::post_force(int /*vflag*/)
     }
     const double diameter = 2.0 * radius[i];
     double beta = lub::drag_beta(model, diameter, std::sqrt(speed2), voidage);
-    // Explicit relaxation is stable and exact in steady state while beta dt / m <= 1; beyond,
-    // the drag removes the slip in one step and never reverses it.
-    beta = std::min(beta, rmass[i] / dt);
     const double buoyant_volume = model.density * lub::sphere_volume(radius[i]);
+    if (!inertia) {
+      // Explicit relaxation is stable and exact in steady state while beta dt / m <= 1;
+      // beyond, the drag removes the slip in one step and never reverses it.
+      beta = std::min(beta, rmass[i] / dt);
+      for (int d = 0; d < 3; d++) {
+        const double force = beta * slip[d] - buoyant_volume * gravity[d];
+        f[i][d] += force;
+        totals[d] += force;
+      }
+      continue;
+    }
+
+    // Maxey-Riley-Gatignol (fluid_inertia.h): added mass m_a and the history's current step
+    // m_h are solved for with the total force F, (m + m_a + m_h) a = F + (m_a + m_h) Du/Dt + H.
+    double fluid_accel[3], lift[3] = {0.0, 0.0, 0.0}, known[3] = {0.0, 0.0, 0.0};
+    for (int d = 0; d < 3; d++)
+      fluid_accel[d] = fluid_scale * (acceleration[d].per_atom ? atom_acceleration[d][i] : acceleration[d].value);
+    const double m_a = added_mass * buoyant_volume;
+    const double m_h =
+        history ? basset.known_force(history_state[i],
+                                     lub::basset_coefficient(diameter, model.density, model.viscosity), dt, known)
+                : 0.0;
+    const double m_eff = rmass[i] + m_a + m_h;
+    beta = std::min(beta, m_eff / dt);    // the cap above, for the mass that the drag accelerates
+    if (magnus || saffman) {
+      double curl[3], part[3];
+      for (int d = 0; d < 3; d++)
+        curl[d] = vorticity[d].per_atom ? atom_vorticity[d][i] : vorticity[d].value;
+      if (magnus) {
+        const double spin[3] = {omega[i][0] - 0.5 * curl[0], omega[i][1] - 0.5 * curl[1], omega[i][2] - 0.5 * curl[2]};
+        lub::magnus_force(radius[i], model.density, spin, slip, part);
+        for (int d = 0; d < 3; d++)
+          lift[d] += part[d];
+      }
+      if (saffman) {
+        lub::saffman_force(diameter, model.density, model.viscosity, slip, curl, part);
+        for (int d = 0; d < 3; d++)
+          lift[d] += part[d];
+      }
+    }
+    const double undisturbed = pressure ? buoyant_volume : 0.0;
+    double accel[3] = {0.0, 0.0, 0.0};
     for (int d = 0; d < 3; d++) {
-      const double force = beta * slip[d] - buoyant_volume * gravity[d];
-      f[i][d] += force;
-      totals[d] += force;
+      const double fluid = beta * slip[d] - buoyant_volume * gravity[d] + undisturbed * fluid_accel[d] + lift[d];
+      if (!solves_acceleration()) {
+        f[i][d] += fluid;
+        totals[d] += fluid;
+        continue;
+      }
+      accel[d] = (f[i][d] + fluid + known[d] + (m_a + m_h) * fluid_accel[d]) / m_eff;
+      const double total = rmass[i] * accel[d];
+      totals[d] += total - f[i][d];
+      f[i][d] = total;
+    }
+    if (history) {
+      const double wdot[3] = {fluid_accel[0] - accel[0], fluid_accel[1] - accel[1], fluid_accel[2] - accel[2]};
+      lub::BassetHistory::store(history_state[i], wdot);
     }
   }
 }
@@ -334,5 +346,6 @@ double FixFluidDrag::compute_vector(int n)
 
 double FixFluidDrag::memory_usage()
 {
-  return 3.0 * maxatom * sizeof(double) + 2.0 * bin_solid.size() * sizeof(double);
+  return 9.0 * maxatom * sizeof(double) + 2.0 * bin_solid.size() * sizeof(double) +
+         (history ? (double)atom->nmax * basset.size() * sizeof(double) : 0.0);
 }

@@ -1,7 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
    fix fluid/drag: the unresolved fluid acting on finite-size spheres: drag from the slip
    velocity (Stokes or Schiller-Naumann), hindered settling from the local solid fraction
-   (Richardson-Zaki or Di Felice) and buoyancy. Physics in src/lubricated/drag.h.
+   (Richardson-Zaki or Di Felice) and buoyancy; optionally the fluid's inertia and memory
+   (added mass, undisturbed-flow force, Basset history, Magnus and Saffman lift). Physics in
+   src/lubricated/drag.h and src/lubricated/fluid_inertia.h. Keywords parsed in
+   fix_fluid_drag_args.cpp, the per-atom history in fix_fluid_drag_history.cpp.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_FLUID_DRAG_H
@@ -10,6 +13,7 @@
 #include "fix.h"
 
 #include "lubricated/drag.h"
+#include "lubricated/fluid_inertia.h"
 
 #include <string>
 #include <vector>
@@ -24,9 +28,23 @@ class FixFluidDrag : public Fix {
   int setmask() override;
   void init() override;
   void setup(int) override;
+  void pre_force(int) override;
   void post_force(int) override;
   double compute_vector(int) override;
   double memory_usage() override;
+
+  // the Basset history per atom (fix_fluid_drag_history.cpp)
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
 
  protected:
   class FixStepVelocity *step_velocity = nullptr;    // the last step's velocities for a set-up
@@ -36,26 +54,48 @@ class FixFluidDrag : public Fix {
     std::string name;      // variable name ("" for a constant)
     int ivar = -1;
     bool per_atom = false;
-  } velocity[3];
+  };
+  Component velocity[3], acceleration[3], vorticity[3];    // u_f, Du_f/Dt, curl u_f
+  bool acceleration_given = false;
   bool superficial = false;
   double gravity[3] = {0.0, 0.0, 0.0};    // for buoyancy; zero vector: none
   int nbins[3] = {1, 1, 1};
   bool bins_given = false;
   int every = 1;
 
+  // fluid inertia and memory (all off by default)
+  double added_mass = 0.0;    // C_m
+  bool pressure = false;      // rho_f V Du_f/Dt
+  bool history = false;       // Basset-Boussinesq
+  bool magnus = false;        // Rubinow-Keller lift
+  bool saffman = false;       // Saffman-Mei shear lift
+  int history_window = 10, history_modes = 20;
+  lubricated::BassetHistory basset;
+  double **history_state = nullptr;
+  double history_dt = 0.0;    // the step the tail is laid out for (0: not yet)
+  bool dt_warned = false;
+
   std::vector<double> bin_solid;    // solid volume fraction per bin
   std::vector<double> local_sum;
   double *atom_velocity[3] = {nullptr, nullptr, nullptr};
+  double *atom_acceleration[3] = {nullptr, nullptr, nullptr};
+  double *atom_vorticity[3] = {nullptr, nullptr, nullptr};
   int maxatom = 0;
   bigint last_fraction_step = -1;
   double totals[4] = {0.0, 0.0, 0.0, 0.0}, totals_all[4] = {0.0, 0.0, 0.0, 0.0};
   bool totals_reduced = false;
 
+  void parse(int narg, char **arg);
   bool needs_fraction() const;
+  bool fluid_inertia() const { return added_mass > 0.0 || pressure || history || magnus || saffman; }
+  bool solves_acceleration() const { return added_mass > 0.0 || history; }
+  void check_last_force_fix();
+  void evaluate(Component *components, double **per_atom);
   // Cloud-in-cell weights: up to 8 bins around x and their trilinear weights.
   int cloud_in_cell(const double *x, int *bins, double *weights) const;
   double solid_fraction_at(const double *x) const;
   void update_solid_fraction();
+  void setup_history();
 };
 
 }    // namespace LAMMPS_NS
