@@ -5,7 +5,7 @@ BUILD  := build
 JOBS   ?= 2
 
 .PHONY: all setup setup-liggghts build demo test test-kernel test-lammps test-liggghts bench format format-check \
-        bench-liggghts report fluidized-bed liggghts-demo clean
+        bench-liggghts report fluidized-bed settling-sphere liggghts-demo clean
 
 all: build
 
@@ -66,6 +66,11 @@ report: build
 # The 2133-sphere fluidised bed on 2 MPI ranks: dumps and a solid-fraction profile.
 fluidized-bed: build
 	$(PY) examples/fluidized_bed/run_fluidized_bed.py --out $(BUILD)/fluidized_bed
+
+# A steel sphere settling in silicone oil onto a wall (DEM, activation dem): trajectory CSV + PNG,
+# first rebound against e_d exp(-35/St), and the same with the activation given directly.
+settling-sphere: build
+	$(PY) examples/settling_sphere/plot_settling_sphere.py --out $(BUILD)/settling_sphere
 
 clean:
 	rm -rf $(BUILD)
