@@ -5,7 +5,7 @@ BUILD  := build
 JOBS   ?= 2
 
 .PHONY: all setup setup-liggghts build demo test test-kernel test-lammps test-liggghts bench format format-check \
-        bench-liggghts report fluidized-bed liggghts-demo shear-cell clean
+        bench-liggghts report fluidized-bed settling-sphere liggghts-demo shear-cell clean
 
 all: build
 
@@ -73,6 +73,11 @@ shear-cell: build
 	cd $(BUILD)/shear_cell && LD_LIBRARY_PATH=$(CURDIR)/$(VENV)/lib $$($(CURDIR)/$(PY) $(CURDIR)/tools/lammps_run.py) \
 	  -in $(CURDIR)/examples/shear_cell/in.shear_cell -var plugin $(CURDIR)/$(BUILD)/lubricatedplugin.so \
 	  -log log.shear_cell -nocite
+
+# A steel sphere settling in silicone oil onto a wall (DEM, activation dem): trajectory CSV + PNG,
+# first rebound against e_d exp(-35/St), and the same with the activation given directly.
+settling-sphere: build
+	$(PY) examples/settling_sphere/plot_settling_sphere.py --out $(BUILD)/settling_sphere
 
 clean:
 	rm -rf $(BUILD)

@@ -24,6 +24,9 @@ inline SetupCheck check_setup(const Coefficients &c, Partner partner, double dt)
 {
   SetupCheck check;
   check.error = validate_time_step(c, dt);
+  if (check.error.empty() && c.wet() && c.dem_activation() && partner != Partner::wall)
+    check.error = "activation dem is for walls (fix wall/lubrication); between spheres give activation eps_al or grid "
+                  "dx (doc/model.rst, \"DEM without a resolved fluid\")";
   if (!check.error.empty()) return check;
   for (const std::string &w : {time_step_warning(c, dt), calibration_warning(c, partner)})
     if (!w.empty()) check.warnings.push_back(w);
@@ -32,7 +35,11 @@ inline SetupCheck check_setup(const Coefficients &c, Partner partner, double dt)
   std::snprintf(text, sizeof text, "e_d = %s, t_c = %.6g (%.3g steps), k/m_e = %.6g, c/m_e = %.6g, ",
                 detail::number(c.e_dry).c_str(), c.contact_time(dt), c.steps_per_contact(dt),
                 m.contact.stiffness_per_mass, m.contact.damping_per_mass);
-  check.description = std::string(text) + (c.wet() ? "film mu_f = " + detail::number(c.viscosity) + ", " : "dry, ") +
+  const std::string dem = c.dem_activation() ? " (activation dem: eps_al = " + detail::number(activation_of(c)) +
+                                                   ", film lambda_pw - 1 over the drag)"
+                                             : "";
+  check.description = std::string(text) +
+                      (c.wet() ? "film mu_f = " + detail::number(c.viscosity) + dem + ", " : "dry, ") +
                       (c.exact_contact ? "integration exact" : "integration sampled");
   if (c.tangential())
     check.tangential = "friction mu_c = " + detail::number(c.friction) +

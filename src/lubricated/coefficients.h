@@ -2,7 +2,7 @@
 // syntax and their validation. Shared by every adapter so that the syntax, the defaults and
 // the error messages are the same in pair_coeff, fix wall/lubrication and LIGGGHTS.
 //
-//   e_d [ncontact N | tcontact t_c] [viscosity mu_f] [activation eps_al | grid dx]
+//   e_d [ncontact N | tcontact t_c] [viscosity mu_f] [activation eps_al | activation dem | grid dx]
 //       [saturation eps_1] [release eps_2] [integration exact | sampled]
 //       [friction mu_c] [tangential e_t] [rolling mu_r] [shearfilm yes | no] [legendre A]
 #pragma once
@@ -10,17 +10,24 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace lubricated {
+
+// eps_activation of `activation dem` (DEM without a resolved fluid): the film hands over to the
+// unbounded drag where its coefficient equals the drag's share (lubrication.h,
+// drag_handover_activation; doc/model.rst, "DEM without a resolved fluid"). A value no input
+// gives (parse_coefficients refuses it typed as a number); kept through pack() and restarts.
+constexpr double activation_dem = -std::numeric_limits<double>::max();
 
 struct Coefficients {
   double e_dry = -1.0;             // dry restitution e_d, 0 < e_d <= 1
   double n_contact = 8.0;          // contact duration in steps, 1...1e6 (used when t_contact == 0)
   double t_contact = 0.0;          // contact duration in time units (> 0 overrides N_c)
   double viscosity = 0.0;          // mu_f, 1e-100...1e100; 0 means dry: no lubrication code runs
-  double eps_activation = 0.0;     // eps_al (normalised activation gap)
+  double eps_activation = 0.0;     // eps_al (normalised activation gap); activation_dem: `activation dem`
   double grid_spacing = 0.0;       // dx: eps_al = 0.75 dx / R instead of a fixed eps_al
   double eps_saturation = 1e-3;    // eps_1, 1e-12 <= eps_1 < 1
   double eps_release = -1e-2;      // eps_2
@@ -38,6 +45,7 @@ struct Coefficients {
   static constexpr int packed_size = 14;
 
   bool wet() const { return viscosity > 0.0; }
+  bool dem_activation() const { return eps_activation == activation_dem; }
   double tangential_restitution() const { return e_tangential >= 0.0 ? e_tangential : e_dry; }
   bool shear_film() const { return shearfilm < 0 ? friction > 0.0 : shearfilm == 1; }
   // Whether the contact needs the tangential kernel (and, for friction, contact history).
@@ -181,7 +189,7 @@ inline std::string validate(const Coefficients &c)
       return range_error("grid", c.grid_spacing, "1e-100 <= dx <= 1e100");
     if (c.grid_spacing == 0.0) {
       if (c.eps_activation == 0.0) return "viscosity > 0 requires the activation (eps_al) or grid (dx) keyword";
-      if (!(c.eps_activation > c.eps_saturation && c.eps_activation <= 1.0))
+      if (!c.dem_activation() && !(c.eps_activation > c.eps_saturation && c.eps_activation <= 1.0))
         return "activation = " + detail::number(c.eps_activation) +
                " is out of range (allowed: saturation eps_1 < eps_al <= 1)";
     }
@@ -240,6 +248,10 @@ inline std::string parse_coefficients(const std::vector<std::string> &words, siz
       c.shearfilm = words[i + 1] == "yes" ? 1 : 0;
       continue;
     }
+    if (key == "activation" && i + 1 < words.size() && words[i + 1] == "dem") {
+      c.eps_activation = activation_dem, given.activation = true;
+      continue;
+    }
     double *target = nullptr;
     if (key == "ncontact")
       target = &c.n_contact, given.ncontact = true;
@@ -269,7 +281,10 @@ inline std::string parse_coefficients(const std::vector<std::string> &words, siz
              "integration, friction, tangential, rolling, shearfilm or legendre)";
     if (i + 1 >= words.size()) return "missing value for keyword " + key;
     if (!detail::to_number(words[i + 1], *target))
-      return "expected a number for keyword " + key + ", got '" + words[i + 1] + "'";
+      return "expected a number for keyword " + key + (key == "activation" ? " (or dem)" : "") + ", got '" +
+             words[i + 1] + "'";
+    if (target == &c.eps_activation && c.dem_activation())
+      return detail::range_error("activation", c.eps_activation, "saturation eps_1 < eps_al <= 1, or dem");
   }
   complete_defaults(c, given);
   return validate_given(c, given);
@@ -323,7 +338,9 @@ inline std::string coefficients_words(const Coefficients &c)
   words += c.t_contact > 0.0 ? " tcontact " + number(c.t_contact) : " ncontact " + number(c.n_contact);
   if (c.wet()) {
     words += " viscosity " + number(c.viscosity);
-    words += c.grid_spacing > 0.0 ? " grid " + number(c.grid_spacing) : " activation " + number(c.eps_activation);
+    words += c.grid_spacing > 0.0 ? " grid " + number(c.grid_spacing)
+             : c.dem_activation() ? std::string(" activation dem")
+                                  : " activation " + number(c.eps_activation);
     words += " saturation " + number(c.eps_saturation) + " release " + number(c.eps_release);
   }
   if (!c.exact_contact) words += " integration sampled";

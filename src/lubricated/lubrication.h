@@ -61,6 +61,24 @@ inline double lambda_integral_of(Partner partner, double eps)
   return expansion_of(partner).integral(eps);
 }
 
+// DEM without a resolved fluid (doc/model.rst, "DEM without a resolved fluid"): fix fluid/drag
+// already applies the unbounded fluid's resistance, 6 pi mu_f R u_n at a wall (lambda = 1 far
+// from it, Brenner 1961). The film must add only the wall's excess, lambda_pw(eps) - 1: it starts
+// at the gap eps* where lambda_pw(eps*) = 1, so that film + drag = lambda_pw(eps) below eps*
+// (Brenner's resistance to the expansion's accuracy) and hands over continuously to the drag
+// above it. eps* = 2.7505 (lambda_pw decreases on [1, 10]; bisection to round-off).
+constexpr double wall_drag_share = 1.0;
+
+inline double drag_handover_activation()
+{
+  double lo = 1.0, hi = 10.0;    // lambda_pw(1) = 1.97 > 1 > lambda_pw(10) = -0.43
+  for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (particle_wall_expansion.lambda(mid) > wall_drag_share ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 // The radius R of the film force and its inverse (one division per pair, not two).
 struct FilmRadius {
   double value = 0.0, inverse = 0.0;

@@ -45,6 +45,14 @@ struct NormalModel {
   double reach(double radius) const { return lubrication.reach(radius); }
 };
 
+// The fixed eps_al of the coefficients: the given one, or with `activation dem` the gap where the
+// wall film hands over to the unbounded drag (drag_handover_activation, lubrication.h; walls only,
+// check_setup refuses it between spheres).
+inline double activation_of(const Coefficients &c)
+{
+  return c.dem_activation() ? drag_handover_activation() : c.eps_activation;
+}
+
 // reuse: the model for the last time step (its guess tables may serve, contact_step.h).
 inline NormalModel make_normal_model(const Coefficients &c, Partner partner, double dt,
                                      const NormalModel *reuse = nullptr)
@@ -54,7 +62,7 @@ inline NormalModel make_normal_model(const Coefficients &c, Partner partner, dou
   m.step = make_contact_step(m.contact, dt, reuse ? &reuse->step : nullptr);
   m.exact = c.exact_contact;
   m.lubrication =
-      make_lubrication(partner, c.viscosity, c.eps_activation, c.grid_spacing, c.eps_saturation, c.eps_release);
+      make_lubrication(partner, c.viscosity, activation_of(c), c.grid_spacing, c.eps_saturation, c.eps_release);
   m.legendre = c.legendre;
   m.restitution = c.e_dry;
   return m;
@@ -105,11 +113,11 @@ inline std::string calibration_warning(const Coefficients &c, Partner partner)
 {
   if (!(c.legendre > 0.0 && c.wet() && c.grid_spacing <= 0.0)) return "";
   const Lubrication lub =
-      make_lubrication(partner, c.viscosity, c.eps_activation, 0.0, c.eps_saturation, c.eps_release);
+      make_lubrication(partner, c.viscosity, activation_of(c), 0.0, c.eps_saturation, c.eps_release);
   const double loss = lub.film_integral(0.0, 1.0) / lub.expansion.c_inv;
   if (loss * (1.0 + 1.0 / c.e_dry) < c.legendre) return "";
   return "legendre " + detail::number(c.legendre) + " cannot act with e_d = " + detail::number(c.e_dry) +
-         " and activation " + detail::number(c.eps_activation) +
+         " and activation " + (c.dem_activation() ? std::string("dem") : detail::number(c.eps_activation)) +
          ": the film alone takes more than the law allows (e_d > " +
          detail::number(std::ceil(100.0 * loss / (c.legendre - loss)) / 100.0) + " needed, or a smaller activation)";
 }

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -162,6 +164,32 @@ TEST(Coefficients, LegendreEndsTheFilmAtContactUnlessReleaseIsGiven)
   EXPECT_EQ(restart_copy(c).legendre, 35.0);
 }
 
+// activation dem (DEM without a resolved fluid): parsed for every adapter, written back as typed,
+// a wall film from eps* where lambda_pw(eps*) = 1; refused between spheres and as a number.
+TEST(Coefficients, ActivationDem)
+{
+  Coefficients c;
+  ASSERT_EQ(parse("0.9 viscosity 1e-3 activation dem", c), "");
+  EXPECT_TRUE(c.dem_activation());
+  EXPECT_EQ(restart_copy(c).eps_activation, activation_dem);
+  EXPECT_NE(coefficients_words(c).find(" activation dem "), std::string::npos);
+  Coefficients back;
+  ASSERT_EQ(parse(coefficients_words(c), back), "");
+  EXPECT_TRUE(back.dem_activation());
+  EXPECT_NE(parse("0.9 viscosity 1e-3 activation dem grid 1e-4", c).find("mutually exclusive"), std::string::npos);
+  EXPECT_NE(parse("0.9 viscosity 1e-3 activation demo", c).find("expected a number for keyword activation (or dem)"),
+            std::string::npos);
+  EXPECT_NE(parse("0.9 viscosity 1e-3 activation -1.7976931348623157e308", c).find("out of range"), std::string::npos);
+  ASSERT_EQ(parse("0.9 viscosity 1e-3 activation dem", c), "");
+  EXPECT_EQ(check_setup(c, Partner::wall, 1e-5).error, "");
+  EXPECT_NE(check_setup(c, Partner::wall, 1e-5).description.find("activation dem: eps_al = 2.75"), std::string::npos)
+      << check_setup(c, Partner::wall, 1e-5).description;
+  EXPECT_NE(check_setup(c, Partner::particle, 1e-5).error.find("activation dem is for walls"), std::string::npos);
+  // Dry: the keyword is accepted and does nothing, as activation is.
+  ASSERT_EQ(parse("0.9 activation dem", c), "");
+  EXPECT_EQ(check_setup(c, Partner::particle, 1e-5).error, "");
+}
+
 TEST(Coefficients, TimeStepChecks)
 {
   Coefficients c;
@@ -186,6 +214,33 @@ TEST(Coefficients, TimeStepChecks)
             "ncontact = 8 is out of range with the time step 1e-101: t_c = N_c dt = 8e-101 "
             "(allowed: 1e-100 <= t_c <= 1e100)");
   EXPECT_NE(validate_time_step(c, 1e100).find("ncontact = 8 is out of range"), std::string::npos);
+}
+
+// A contact of exactly 8 steps whose time step comes through an input script (variable dt equal
+// v_tc/8, timestep ${dt}: LAMMPS writes an equal-style variable with 15 digits) gives
+// t_c / dt = 7.999999999999994...: that is N_c = 8, no warning (issue 21). The sample must contain
+// such cases, or the test could not fail.
+static double as_input_variable(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.15g", value);
+  return std::strtod(text, nullptr);
+}
+
+TEST(Coefficients, EightStepsUpToRoundingDoNotWarn)
+{
+  int rounded_below = 0;
+  for (double r_over_u = 1e-4; r_over_u < 1e-2; r_over_u *= 1.013) {
+    Coefficients c;
+    c.e_dry = 0.9;
+    c.t_contact = as_input_variable(0.04 * r_over_u);
+    const double dt = as_input_variable(c.t_contact / 8.0);
+    rounded_below += c.steps_per_contact(dt) < 8.0;
+    EXPECT_EQ(time_step_warning(c, dt), "") << "t_c / dt = " << c.steps_per_contact(dt);
+    EXPECT_NE(time_step_warning(c, dt * (1.0 + 1e-9)), "");    // a contact truly shorter than 8 steps
+    EXPECT_TRUE(check_setup(c, Partner::wall, dt).warnings.empty());
+  }
+  EXPECT_GT(rounded_below, 0);
 }
 
 // Messages quote values as users type them (%g), so 1e-06 reads as 1e-06, not 0.000001.

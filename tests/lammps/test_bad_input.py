@@ -36,6 +36,11 @@ CASES = {
     "eps1_not_above_eps2": (script("pair_coeff * * 0.9 saturation 1e-3 release 2e-3"),
                             ["release = 0.002", "eps_2 < eps_1"]),
     "wet_without_activation": (script("pair_coeff * * 0.9 viscosity 1e-3"), ["activation", "grid"]),
+    "activation_dem_between_spheres": (script("pair_coeff * * 0.9 viscosity 1e-3 activation dem"),
+                                       ["activation dem is for walls", "activation eps_al or grid dx"]),
+    "activation_not_dem": (script(fix="fix w all wall/lubrication 0.9 viscosity 1e-3 activation DEM "
+                                      "zplane 0.0 NULL"),
+                           ["expected a number for keyword activation (or dem)", "'DEM'"]),
     "unknown_pair_keyword": (script("pair_coeff * * 0.9 viscosty 1e-3"), ["unknown keyword 'viscosty'"]),
     "missing_coefficients": (script("pair_coeff 1 1 0.9"), ["All pair coeffs are not set", "1      2: is not set"]),
     "pair_style_arguments": (script().replace("pair_style lubricated/springdashpot",
