@@ -49,14 +49,18 @@ def parse_log(log, all_runs=False):
         body = log[m.end():end]
         for section in SECTIONS:
             row = re.search(rf"^{section}\s*\|\s*([0-9.eE+-]+)\s*\|\s*([0-9.eE+-]+)\s*\|", body, re.M)
-            if row:
-                times[section] += float(row.group(2))      # avg time over ranks
+            # LIGGGHTS 3.8 (the LAMMPS of 2013) writes "Pair  time (%) = 0.47 (85.3)", "Outpt"
+            old = re.search(rf"^{section[:4] if section != 'Output' else 'Outpt'}\s+time \(%\) = ([0-9.eE+-]+)",
+                            body, re.M)
+            if row or old:
+                times[section] += float(row.group(2) if row else old.group(1))    # avg time over ranks
                 found.add(section)
     shares = {s: (times[s] / seconds if s in found and seconds > 0 else float("nan")) for s in SECTIONS}
     dangerous = [int(d) for d in re.findall(r"Dangerous builds = (\d+)", log)]
     neighs = re.findall(r"Ave neighs/atom = ([0-9.eE+-]+)", log)
     cutoff = re.search(r"master list distance cutoff = ([0-9.eE+-]+)", log)
-    memory = re.search(r"Per MPI rank memory allocation \(min/avg/max\) = ([0-9.eE+-]+) \| ([0-9.eE+-]+)", log)
+    memory = (re.search(r"Per MPI rank memory allocation \(min/avg/max\) = ([0-9.eE+-]+) \| ([0-9.eE+-]+)", log)
+              or re.search(r"Memory usage per processor = ()([0-9.eE+-]+) Mbytes", log))         # LIGGGHTS
     rss = re.search(r"Maximum resident set size:\s*([0-9.eE+-]+)\s*Mbyte", log)
     return dict(seconds=seconds, steps=steps, atoms=atoms, ns=seconds / (steps * atoms) * 1e9 if steps else float("nan"),
                 times=times, shares=shares, dangerous=sum(dangerous) if dangerous else -1,

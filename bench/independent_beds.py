@@ -2,7 +2,7 @@
 the plugin's four contact models against LAMMPS's built-in Hooke styles, one rank.
 
     .venv/bin/python bench/independent_beds.py [--sizes 2000 20000 100000] [--repeats 3]
-        [--states settled active] [--steps N | --particle-steps P] [--out DIR] [--rebuild]
+        [--states settled active] [--steps N | --particle-steps P] [--liggghts] [--out DIR] [--rebuild]
 
 The beds (built once per size, cached in OUT/bedN/settled.data; --rebuild rebuilds them):
 spheres of radius uniform in [0.9, 1.1] mm, 2500 kg/m^3, SI, inserted at random (random
@@ -16,9 +16,9 @@ history of one style means nothing to another, so every style starts without one
 
 States, from that snapshot:
   settled  the bed as it is (settled with friction; the frictionless styles slump a little);
-  active   random velocities, normal per component with rms speed 0.1 m/s (seeded atom-style
-           `normal()`, the same numbers for every style), imposed at the start and every 100
-           steps (`run N pre no post yes every 100 "velocity all set ..."`): the bed stays
+  active   random velocities, uniform per component in [-0.1, 0.1] m/s (rms speed 0.1 m/s; a hash
+           of atom ID and step, the same numbers for every style and for LIGGGHTS), imposed at
+           the start and every 100 steps (`run N pre no post yes every 100 "velocity all set ..."`): the bed stays
            agitated; the loop time is the sum over the 100-step chunks (their set-up, which
            recomputes the forces, is not timed).
 
@@ -47,6 +47,10 @@ from which the deepest sphere-sphere overlap (radius sum - distance) is computed
 Memory: LAMMPS's "Per MPI rank memory allocation" (avg) per 1000 atoms; the issue's target
 compares it with gran/hooke/history's at the same list cutoff, so gran/hooke/history is also
 set up (run 0, not timed) with its skin raised to the wet plugin's list cutoff.
+
+With --liggghts (skipped with a message where LIGGGHTS or the model library is missing), LIGGGHTS
+3.8.0 runs on the same bed, states, steps and repeats: model lubricated wet (and dry, for
+information) against model hooke/stiffness, all with tangential history and friction 0.3.
 
 Output: the table on stdout, OUT/RESULTS.md, --results (default bench/RESULTS_BEDS.md, 'none'
 to skip) with the README's performance table, OUT/runs.csv with every timed run; logs in
@@ -167,10 +171,13 @@ MEMORY = HEADER + """{pair}
 info memory out log
 """
 
-ACTIVE_DRIVE = (f"variable vx atom normal(0.0,{V_RMS / math.sqrt(3):.10g},{SEED})\n"
-                f"variable vy atom normal(0.0,{V_RMS / math.sqrt(3):.10g},{SEED})\n"
-                f"variable vz atom normal(0.0,{V_RMS / math.sqrt(3):.10g},{SEED})\n"
-                "velocity all set v_vx v_vy v_vz units box")
+# The imposed velocities: per component uniform in [-V_RMS, V_RMS] (rms V_RMS / sqrt(3), rms speed
+# V_RMS), from a hash of the atom ID and the step (the fraction of 43758.5453 sin(...)): the same
+# numbers for every style, LAMMPS or LIGGGHTS, whose atom-style variables have no random().
+ACTIVE_DRIVE = "\n".join(
+    f"variable h{c} atom sin(id*12.9898+step*78.233+{SEED % 1000 + k + 1})*43758.5453\n"
+    f"variable v{c} atom {V_RMS:g}*(2*(v_h{c}-floor(v_h{c}))-1)" for k, c in enumerate("xyz")) + \
+    "\nvelocity all set v_vx v_vy v_vz units box"
 ACTIVE_CHUNKS = f' pre no post yes every {KICK_EVERY} "velocity all set v_vx v_vy v_vz units box"'
 
 
@@ -353,6 +360,93 @@ def memory_reference(work, cutoff, reference):
     return dict(memory=timing["memory"], cutoff=timing["cutoff"], rss=timing["rss"], neighs=timing["neighs"])
 
 
+# LIGGGHTS 3.8.0 (Debian's liggghts + LD_PRELOAD of the model, tools/liggghts_run.py) on the same
+# settled bed (the data file rewritten with a second atom type for the floor): model lubricated
+# wet against model hooke/stiffness with the same k and gamma (R = 1 mm, as for gran/hooke), both
+# with LIGGGHTS's tangential history model and friction 0.3 (examples/liggghts/in.settling_bed
+# has the same property set). Newton off, as LIGGGHTS's granular pair styles require.
+LIGGGHTS_MODELS = [("hooke/stiffness", "hooke/stiffness", 0), ("lubricated wet", "lubricated", 1),
+                   ("lubricated dry", "lubricated", 0)]
+LIGGGHTS_TARGET = ("lubricated wet", "hooke/stiffness", 1.3)
+LIGGGHTS = """atom_style granular
+atom_modify map array
+communicate single vel yes
+newton off
+units si
+boundary p p f
+read_data ../settled_liggghts.data
+neighbor {skin} bin
+neigh_modify delay 0 every 1 check yes
+fix m1 all property/global coefficientRestitution peratomtypepair 2 {e} {e} {e} {e}
+fix m2 all property/global coefficientFriction peratomtypepair 2 {mu} {mu} {mu} {mu}
+fix m3 all property/global lubricatedContactSteps scalar {nc}
+fix m4 all property/global kn peratomtypepair 2 {kn_pair:.10g} {kn_wall:.10g} {kn_wall:.10g} {kn_wall:.10g}
+fix m5 all property/global kt peratomtypepair 2 {kt_pair:.10g} {kt_wall:.10g} {kt_wall:.10g} {kt_wall:.10g}
+fix m6 all property/global gamman peratomtypepair 2 {gamma_n:.10g} {gamma_n:.10g} {gamma_n:.10g} {gamma_n:.10g}
+fix m7 all property/global gammat peratomtypepair 2 {gamma_t:.10g} {gamma_t:.10g} {gamma_t:.10g} {gamma_t:.10g}
+{wet}
+pair_style gran model {model} tangential history
+pair_coeff * *
+fix floor all wall/gran model {model} tangential history primitive type 2 zplane 0.0
+fix nve all nve/sphere
+fix weight all gravity {g} vector 0 0 -1
+timestep {dt}
+thermo_style custom step atoms ke
+thermo {thermo}
+{drive}
+run {steps}{chunks}
+print "BENCH timed run done"
+variable speed atom sqrt(vx*vx+vy*vy+vz*vz)
+compute vmax all reduce max v_speed
+variable sunk atom z<{half_r_min}
+compute sunk all reduce sum v_sunk
+variable natoms equal atoms
+variable vmax equal c_vmax
+variable nsunk equal c_sunk
+thermo_style custom step atoms ke c_vmax c_sunk
+run 0
+print "RESULT atoms ${{natoms}}"
+print "RESULT vmax ${{vmax}}"
+print "RESULT sunk ${{nsunk}}"
+"""
+LIGGGHTS_WET = ("fix m8 all property/global lubricatedViscosity scalar 1e-3\n"
+                f"fix m9 all property/global lubricatedGridSpacing scalar {GRID:g}\n"
+                "fix m10 all property/global lubricatedLimitPair scalar 0")
+
+
+def liggghts_data(source, target):
+    """The LAMMPS data file of the bed for LIGGGHTS's read_data: plain section names, a second
+    atom type (the floor's, no atom has it), atoms and velocities as they are."""
+    text = source.read_text().splitlines()
+    out = ["LIGGGHTS data file: the settled bed of bench/independent_beds.py", ""]
+    section = None
+    for line in text[1:]:
+        words = line.split()
+        if not words:
+            continue
+        if words[0] in ("Atoms", "Velocities"):
+            section = words[0]
+            out += ["", section, ""]
+        elif section is None:
+            out.append("2 atom types" if words[1:] == ["atom", "types"] else line)
+        else:
+            out.append(line)
+    target.write_text("\n".join(out) + "\n")
+
+
+def liggghts_run_one(work, tag, state, steps, model, wet):
+    import liggghts_run
+    fmt = dict(hooke_coefficients(R, RHO, E_DRY, NC, DT), half_r_min=0.5 * R_MIN, skin=SKIN, e=E_DRY, mu=MU_C, nc=NC, g=G, dt=DT,
+               model=model, wet=LIGGGHTS_WET if wet else "", steps=steps,
+               thermo=KICK_EVERY if state == "active" else steps,
+               drive=ACTIVE_DRIVE if state == "active" else "",
+               chunks=ACTIVE_CHUNKS if state == "active" else "")
+    check, text = liggghts_run.run(LIGGGHTS.format(**fmt), work / "liggghts", name=f"in.{tag}", timeout=6 * 3600)
+    timing = parse_log(text[:text.index("BENCH timed run done")], all_runs=True)
+    timing["check"] = check
+    return timing
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--sizes", type=int, nargs="+", default=[2000, 20000, 100000])
@@ -369,6 +463,8 @@ def main():
                         help=f"settled when the kinetic energy per sphere is below this [J] (default {SETTLE_KE:g})")
     parser.add_argument("--seed", type=int, default=SEED)
     parser.add_argument("--rebuild", action="store_true", help="rebuild the cached beds")
+    parser.add_argument("--liggghts", action="store_true",
+                        help="also time LIGGGHTS's model lubricated wet against model hooke/stiffness on each bed")
     parser.add_argument("--out", default=str(ROOT / "build" / "bench-beds"))
     parser.add_argument("--results", default=str(ROOT / "bench" / "RESULTS_BEDS.md"),
                         help="markdown file for the results besides OUT/RESULTS.md ('none' to skip)")
@@ -380,6 +476,12 @@ def main():
         parser.error(f"unknown styles {unknown}; known: {list(all_styles)}")
     if not 0 <= args.settle_min <= args.settle_max:
         parser.error("need 0 <= --settle-min <= --settle-max")
+    if args.liggghts:
+        import liggghts_run
+        missing = liggghts_run.available()
+        if missing:
+            print(f"independent_beds: --liggghts skipped: {missing}", flush=True)
+            args.liggghts = False
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     started = time.time()
@@ -387,7 +489,7 @@ def main():
     def log(line):
         print(line, flush=True)
 
-    rows, beds, problems, memrefs = [], {}, [], {}
+    rows, beds, problems, memrefs, lrows = [], {}, [], {}, []
     raw = ["size,state,style,repeat,steps,loop_s,ns_per_particle_step,pair_s,pair_share,neigh_share,"
            "neighs_per_atom,list_cutoff_m,memory_mb,max_rss_mb,dangerous_builds,atoms_end,pair_overlap_R,"
            "wall_overlap_R,sunk"]
@@ -396,10 +498,23 @@ def main():
         beds[size] = bed
         problems += [f"{size} settle run: {f}" for f in physics_flags(bed["check"])]
         shutil.rmtree(work / "runs", ignore_errors=True)
+        shutil.rmtree(work / "liggghts", ignore_errors=True)
+        if args.liggghts:
+            liggghts_data(work / "settled.data", work / "settled_liggghts.data")
         steps = timed_steps(size, args)
-        runs = {}
+        runs, lruns = {}, {}
         for rep in range(args.repeats):
             for state in args.states:
+                for label, model, wet in (LIGGGHTS_MODELS if args.liggghts else []):
+                    tag = f"{state}.{label.replace(' ', '_').replace('/', '_')}.{rep + 1}"
+                    t = liggghts_run_one(work, tag, state, steps, model, wet)
+                    lruns.setdefault((state, label), []).append(t)
+                    raw.append(f"{size},{state},LIGGGHTS {label},{rep + 1},{t['steps']},{t['seconds']:.6g},"
+                               f"{t['ns']:.2f},{t['times']['Pair']:.6g},{t['shares']['Pair']:.4f},"
+                               f"{t['shares']['Neigh']:.4f},{t['neighs']:.4g},{t['cutoff']:.6g},{t['memory']:.4g},"
+                               f"nan,{t['dangerous']},{int(t['check']['atoms'])},nan,nan,{int(t['check']['sunk'])}")
+                    log(f"  {size} {state:7s} LIGGGHTS {label:24s} run {rep + 1}: {t['ns']:7.1f} ns/particle-step, "
+                        f"Pair {t['shares']['Pair']:4.0%}, {t['neighs']:.2f} neighs/atom")
                 for name in names:
                     pair, wall = all_styles[name]
                     tag = f"{state}.{name.replace(' ', '_').replace('/', '_').replace('+', '_')}.{rep + 1}"
@@ -422,13 +537,19 @@ def main():
         for state in args.states:
             for name in names:
                 rows.append(summarise(size, state, name, runs, memrefs.get(size, {}), problems))
+            for label, *_ in (LIGGGHTS_MODELS if args.liggghts else []):
+                lrows.append(summarise_liggghts(size, state, label, lruns, problems))
     wall = time.time() - started
     problems = list(dict.fromkeys(problems))
     print_table(rows)
+    for r in lrows:
+        ratio = f"{r['ratio']:.2f}" if "ratio" in r else "-"
+        print(f"{r['size']:>7} {r['state']:7s} LIGGGHTS {r['name']:24s} {r['ns']:7.1f} {r['spread']:6.0%} {ratio:>5} "
+              f"{verdict(r):>12} {r['pair_share']:4.0%} {r['neighs']:6.2f}")
     print(f"\ntotal wall time {wall:.0f} s")
     for p in problems:
         print("PROBLEM:", p)
-    text = report(rows, beds, problems, args, wall)
+    text = report(rows, beds, problems, args, wall, lrows)
     (out / "RESULTS.md").write_text(text)
     (out / "runs.csv").write_text("\n".join(raw) + "\n")
     if args.results.lower() != "none":
@@ -474,6 +595,25 @@ def summarise(size, state, name, runs, memrefs, problems):
     return row
 
 
+def summarise_liggghts(size, state, label, lruns, problems):
+    timings = lruns[(state, label)]
+    ns = [t["ns"] for t in timings]
+    row = dict(size=size, state=state, name=label, steps=timings[0]["steps"], ns=statistics.median(ns),
+               spread=max(ns) / min(ns) - 1.0, pair_share=statistics.median(t["shares"]["Pair"] for t in timings),
+               neighs=timings[0]["neighs"], dangerous=max(t["dangerous"] for t in timings))
+    name, reference, target = LIGGGHTS_TARGET
+    if label != reference:
+        row["reference"] = reference
+        row["ratio"] = row["ns"] / statistics.median(t["ns"] for t in lruns[(state, reference)])
+        row["target"] = target if label == name else None
+    for t in timings:
+        if int(t["check"]["atoms"]) != size:
+            problems.append(f"{size} {state} LIGGGHTS {label}: {size - int(t['check']['atoms'])} atoms lost")
+        if t["check"]["sunk"] > 0:
+            problems.append(f"{size} {state} LIGGGHTS {label}: {int(t['check']['sunk'])} spheres through the floor")
+    return row
+
+
 def verdict(row, markdown=False):
     if row.get("target") is None:
         return "(info)" if "ratio" in row else "-"
@@ -499,7 +639,7 @@ def print_table(rows):
               f"{r['cutoff'] * 1e3:6.4g} {r['mem']:6.3g} {memory_verdict(r):>13} {r['pair_overlap']:7.4f}")
 
 
-def report(rows, beds, problems, args, wall):
+def report(rows, beds, problems, args, wall, lrows=()):
     today = datetime.date.today().isoformat()
     command = (f"bench/independent_beds.py --sizes {' '.join(map(str, args.sizes))} --repeats {args.repeats} "
                f"--states {' '.join(args.states)}" + (f" --steps {args.steps}" if args.steps else
@@ -554,7 +694,20 @@ def report(rows, beds, problems, args, wall):
                 r = next((r for r in rows if r["size"] == size and r["state"] == state and r["name"] == name), None)
                 cells.append(f"{r['ratio']:.2f}" if r and "ratio" in r else "-")
             lines.append(f"| {size}, {state} | " + " | ".join(cells) + " |")
-    lines += ["", "Targets: dry 0.9, wet 1.2, dry+friction 1.0, wet+friction 1.3 (issue 19).", "",
+    lines += ["", "Targets: dry 0.9, wet 1.2, dry+friction 1.0, wet+friction 1.3 (issue 19)."]
+    if lrows:
+        lines += ["", "## LIGGGHTS", "",
+                  "LIGGGHTS 3.8.0 (Debian), one rank, on the same settled bed (`--liggghts`): `model lubricated` "
+                  "wet (`lubricatedViscosity 1e-3`, `lubricatedGridSpacing 1.25e-4`) and dry against `model "
+                  "hooke/stiffness` with the same k and gamma (R = 1 mm), all with `tangential history` and "
+                  f"friction {MU_C}, the same states, steps and interleaved repeats. Target: wet <= 1.3x.", "",
+                  "| spheres | state | model | steps | ns | spread | ratio to hooke/stiffness | target | Pair share "
+                  "| neighbours |", "|---:|---|---|---:|---:|---:|---:|---|---:|---:|"]
+        for r in lrows:
+            lines.append(f"| {r['size']} | {r['state']} | {r['name']} | {r['steps']} | {r['ns']:.1f} | "
+                         f"{r['spread']:.0%} | {r['ratio'] if 'ratio' in r else 1:.2f} | {verdict(r, True)} | "
+                         f"{r['pair_share']:.0%} | {r['neighs']:.2f} |")
+    lines += ["",
               "## Beds and physics checks", "",
               "Settle run (plugin dry, friction): steps until the kinetic energy per sphere fell below "
               f"{args.settle_ke:g} J (or --settle-max). For every style and state, the worst over its "
