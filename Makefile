@@ -5,7 +5,7 @@ BUILD  := build
 JOBS   ?= 2
 
 .PHONY: all setup setup-liggghts build demo test test-kernel test-lammps test-liggghts bench format format-check \
-        bench-liggghts report fluidized-bed settling-sphere liggghts-demo shear-cell clean
+        bench-liggghts bench-beds report fluidized-bed settling-sphere liggghts-demo shear-cell clean
 
 all: build
 
@@ -48,6 +48,15 @@ test-liggghts:
 bench: build
 	$(PY) bench/settling_bed.py --out $(BUILD)/bench
 	$(PY) bench/bed_scaling.py --out $(BUILD)/bed_scaling
+
+# Independent beds (issue 19): polydisperse random beds of 2000, 20000 and 100000 spheres, settled
+# with friction and kept active; the plugin dry, wet, with friction against gran/hooke and
+# gran/hooke/history (bench/RESULTS_BEDS.md, the README's performance table). Beds cached in
+# $(BUILD)/bench-beds (delete it or pass --rebuild to rebuild them). LIGGGHTS's model lubricated
+# on the same beds too (skipped with a message without LIGGGHTS). About 40 min on an idle core (estimate).
+BEDS_ARGS ?= --liggghts
+bench-beds: setup-liggghts build
+	$(PY) bench/independent_beds.py --out $(BUILD)/bench-beds $(BEDS_ARGS)
 
 # LIGGGHTS settling bed: model lubricated against model hooke/stiffness (bench/RESULTS_LIGGGHTS.md).
 bench-liggghts: setup-liggghts build

@@ -41,14 +41,15 @@ import math
 import pathlib
 import platform
 import random
-import re
 import shutil
 import sys
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tools"))
+sys.path.insert(0, str(ROOT / "bench"))
 import lammps_run  # noqa: E402
+from bench_common import hooke_coefficients, lammps_version, parse_log, physics_flags  # noqa: E402,F401
 
 R = 1.0e-3           # sphere radius [m]
 RHO = 2500.0         # sphere density [kg/m^3]
@@ -137,14 +138,11 @@ def styles():
     """name -> (pair lines, wall line); same e, t_c and neighbor settings for all.
     With --friction: tangential stiffness and damping of the plugin (e_t = e_d, m_t = 2/7 m_e:
     Kt = 2/7 Kn, gamma_t = 2/7 gamma_n per unit m_e), Coulomb mu_c on both."""
-    mass = RHO * 4.0 / 3.0 * math.pi * R ** 3
-    t_c = NC * DT
-    kappa = (math.pi ** 2 + math.log(E_DRY) ** 2) / t_c ** 2       # k / m_e
-    gamma_n = -2.0 * math.log(E_DRY) / t_c                           # c / m_e
-    kn_pair, kn_wall = 0.5 * mass * kappa, mass * kappa              # m_e = m/2, m_e = m
+    c = hooke_coefficients(R, RHO, E_DRY, NC, DT)
+    kn_pair, kn_wall, gamma_n = c["kn_pair"], c["kn_wall"], c["gamma_n"]
     plugin = f"{E_DRY} ncontact {NC}"
     if FRICTION:
-        kt_pair, kt_wall, gamma_t = 2.0 / 7.0 * kn_pair, 2.0 / 7.0 * kn_wall, 2.0 / 7.0 * gamma_n
+        kt_pair, kt_wall, gamma_t = c["kt_pair"], c["kt_wall"], c["gamma_t"]
         return {
             "gran/hooke/history": (
                 f"pair_style gran/hooke/history {kn_pair:.10g} {kt_pair:.10g} {gamma_n:.10g} {gamma_t:.10g} {MU_C} 1\n"
@@ -190,32 +188,6 @@ def write_initial(path, natoms, width, seed):
         velocities.append(f"{n} {vx:.6g} {vy:.6g} {vz:.6g} 0 0 0")
     path.write_text("\n".join(lines + velocities) + "\n")
     return dict(side=side / R, layers=layers)
-
-
-def parse_log(log):
-    """Loop time, atoms, steps, timing shares of the first run; dangerous builds of all runs."""
-    loop = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms", log)
-    seconds, steps, atoms = float(loop.group(1)), int(loop.group(3)), int(loop.group(4))
-    body = log[loop.end():]
-    shares = {}
-    for section in ("Pair", "Neigh", "Comm", "Output", "Modify", "Other"):
-        m = re.search(rf"^{section}\s*\|.*\|\s*([0-9.]+)\s*$", body, re.M)
-        shares[section] = float(m.group(1)) / 100.0 if m else float("nan")
-    dangerous = [int(d) for d in re.findall(r"Dangerous builds = (\d+)", log)]
-    return dict(seconds=seconds, steps=steps, atoms=atoms, ns=seconds / (steps * atoms) * 1e9,
-                shares=shares, dangerous=sum(dangerous) if dangerous else -1)
-
-
-def physics_flags(check):
-    """Plain-words warnings about the final state of a run."""
-    flags = []
-    if check["sunk"] > 0:
-        flags.append(f"{int(check['sunk'])} sphere centres below z = R/2 (through the floor)")
-    if check["wall_overlap"] > 0.2:
-        flags.append(f"wall overlap {check['wall_overlap']:.3f} R")
-    if check["pair_overlap"] > 0.2:
-        flags.append(f"pair overlap {check['pair_overlap']:.3f} R")
-    return flags
 
 
 def bench_size(size, phases, repeats, width, args, log):
@@ -400,14 +372,6 @@ def report(rows, settles, problems, args, wall):
                                   "none (no dangerous builds, no sphere through the floor, overlaps below 0.2 R)."),
               ""]
     return "\n".join(lines)
-
-
-def lammps_version():
-    try:
-        import importlib.metadata
-        return importlib.metadata.version("lammps")
-    except Exception:                    # noqa: BLE001 - the version is only a label
-        return "(unknown)"
 
 
 if __name__ == "__main__":
