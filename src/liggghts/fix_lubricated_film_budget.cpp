@@ -8,6 +8,7 @@
 #include "modify.h"
 #include "update.h"
 
+#include "liggghts/fix_style_map.h"
 #include "liggghts/lubricated_properties.h"
 #include "lubricated/contact_network.h"
 #include "lubricated/contact_network_message.h"
@@ -24,19 +25,6 @@ namespace lubricated {
 namespace liggghts {
 
 namespace {
-
-// LIGGGHTS registers its fix styles at compile time, in Modify's private style map. This fix is
-// added to that map at run time, through the one access C++ grants to private members: a
-// pointer to member named in an explicit instantiation.
-using FixCreator = LAMMPS_NS::Fix *(*)(LAMMPS_NS::LAMMPS *, int, char **);
-using FixMap = std::map<std::string, FixCreator>;
-using FixMapMember = FixMap *LAMMPS_NS::Modify::*;
-
-FixMapMember fix_map_member();
-template <FixMapMember member> struct FixMapAccess {
-  friend FixMapMember fix_map_member() { return member; }
-};
-template struct FixMapAccess<&LAMMPS_NS::Modify::fix_map>;
 
 LAMMPS_NS::Fix *create_fix(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg)
 {
@@ -67,8 +55,7 @@ FixLubricatedFilmBudget *FixLubricatedFilmBudget::find(LAMMPS_NS::LAMMPS *lmp, b
   if (index >= 0 && index > last_wall) return static_cast<FixLubricatedFilmBudget *>(modify->fix[index]);
   // Absent, or before a wall added since: (re)created at the end (it holds nothing between steps).
   if (index >= 0) modify->delete_fix(id_name);
-  FixMap *styles = modify->*fix_map_member();
-  if (styles->find(style_name) == styles->end()) (*styles)[style_name] = &create_fix;
+  add_fix_style(modify, style_name, &create_fix);
   std::string id = id_name, group = "all", style = style_name;
   char *arg[3] = {&id[0], &group[0], &style[0]};
   modify->add_fix(3, arg);

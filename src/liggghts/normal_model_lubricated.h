@@ -35,6 +35,7 @@ NORMAL_MODEL(LUBRICATED, lubricated, 42)
 #include "update.h"
 
 #include "liggghts/fix_lubricated_film_budget.h"
+#include "liggghts/fix_lubricated_step_velocity.h"
 #include "liggghts/lubricated_properties.h"
 #include "liggghts/setforce_holds.h"
 #include "lubricated/check_setup.h"
@@ -108,6 +109,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     neighbor->register_contact_dist_factor(1.0 + reach + lubricated::liggghts::approach_margin);
     warned_ = false;
     if (!is_wall_) find_immovable_groups();
+    step_velocity_ = lubricated::liggghts::FixLubricatedStepVelocity::find_or_create(lmp);
     join_film_budget(caller);
     report_setup(caller);
   }
@@ -118,12 +120,15 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     if (update->dt != dt_) build_models();
     const int t = sidata.itype * (ntypes_ + 1) + sidata.jtype;
     const lubricated::NormalModel &model = models_[t];
-    const double gap = -sidata.deltan, u_n = sidata.vn;
+    const bool continued = step_velocity_->continues();
+    const double gap = -sidata.deltan,
+                 u_n = continued ? sidata.vn - step_velocity_->kick_along(sidata.i, partner(sidata), sidata.en)
+                                 : sidata.vn;
     const double m_e = is_wall_ ? sidata.meff : pair_reduced_mass(sidata.i, sidata.j);
     const double radius = is_wall_ ? sidata.radi : lubricated::film_radius_pair(sidata.radi, sidata.radj).value;
     if (!update->setupflag && gap - u_n * dt_ >= (neighbor->contactDistanceFactor - 1.0) * sidata.radsum)
       missed_approach(u_n);    // entered from beyond the close range: no step before was seen
-    const lubricated::NormalForce fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation());
+    const lubricated::NormalForce fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation(continued));
 
     // Tangential and rolling models of LIGGGHTS read these: the solid contact force for the
     // Coulomb limit, and a tangential spring-dashpot with the normal period and restitution
@@ -137,7 +142,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
 
     apply(fn.total() * (is_wall_ ? sidata.area_ratio : 1.0), sidata.en, i_forces, j_forces);
     if (fn.lubrication != 0.0 && budget_on_ && budget_->active())
-      record_film(sidata, fn.lubrication * (is_wall_ ? sidata.area_ratio : 1.0), sidata.en, m_e, u_n);
+      record_film(sidata, fn.lubrication * (is_wall_ ? sidata.area_ratio : 1.0), sidata.en, m_e, u_n, continued);
     // In overlap a step ago too: a sustained contact of the network check.
     if (!is_wall_ && budget_ && budget_->network_due() && budget_->network_load_matters(t) && gap - u_n * dt_ < 0.0) {
       double m_i, m_j;
@@ -158,17 +163,19 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     const double en[3] = {scdata.delta[0] / r, scdata.delta[1] / r, scdata.delta[2] / r};
     const double gap = r - scdata.radsum;
     const double *vi = scdata.v_i, *vj = scdata.v_j;
-    const double u_n = (vi[0] - vj[0]) * en[0] + (vi[1] - vj[1]) * en[1] + (vi[2] - vj[2]) * en[2];
+    const bool continued = step_velocity_->continues();
+    double u_n = (vi[0] - vj[0]) * en[0] + (vi[1] - vj[1]) * en[1] + (vi[2] - vj[2]) * en[2];
+    if (continued) u_n -= step_velocity_->kick_along(scdata.i, partner(scdata), en);
     const double radius = is_wall_ ? scdata.radi : lubricated::film_radius_pair(scdata.radi, scdata.radj).value;
     if (!model.acts(gap, radius, u_n)) return;
     const double m_e = reduced_mass(scdata);
-    const lubricated::NormalForce fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation());
+    const lubricated::NormalForce fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation(continued));
     if (fn.total() == 0.0) return;
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
     apply(fn.total() * (is_wall_ ? scdata.area_ratio : 1.0), en, i_forces, j_forces);
     scdata.has_force_update = true;
     if (fn.lubrication != 0.0 && budget_on_ && budget_->active())
-      record_film(scdata, fn.lubrication * (is_wall_ ? scdata.area_ratio : 1.0), en, m_e, u_n);
+      record_film(scdata, fn.lubrication * (is_wall_ ? scdata.area_ratio : 1.0), en, m_e, u_n, continued);
   }
 
  private:
@@ -351,15 +358,23 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   }
 
   // The film's share of its cap over the time it acts before the next evaluation (film_budget.h).
-  void record_film(const SurfacesCloseData &scdata, double film, const double *en, double m_e, double u_n)
+  void record_film(const SurfacesCloseData &scdata, double film, const double *en, double m_e, double u_n,
+                   bool continued)
   {
-    const double kick = lubricated::film_kick_time(update->dt, update->setupflag != 0, false);
+    const double kick = lubricated::film_kick_time(update->dt, update->setupflag && !continued, false);
     const double f[3] = {film * en[0], film * en[1], film * en[2]};
     budget_->add_film(scdata.i, is_wall_ ? -1 : scdata.j, f, lubricated::film_share(film, m_e, u_n, kick));
   }
 
-  // LIGGGHTS integrates with velocity Verlet (fix nve/sphere).
-  lubricated::Evaluation evaluation() const { return lubricated::evaluation_of(update->setupflag != 0, false); }
+  // LIGGGHTS integrates with velocity Verlet (fix nve/sphere); a set-up that continues the last
+  // run evaluates as its step did (fix_lubricated_step_velocity.h).
+  lubricated::Evaluation evaluation(bool continued) const
+  {
+    return lubricated::evaluation_of(update->setupflag && !continued, false);
+  }
+
+  // The partner atom of a pair, -1 at a wall.
+  int partner(const SurfacesCloseData &scdata) const { return is_wall_ ? -1 : scdata.j; }
 
   // LIGGGHTS's Error::all throws with a pointer to the text, printed after the pair style (and
   // this model) are gone: the text must outlive them.
@@ -406,6 +421,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   double bound_dt_ = -1.0;                    // the time step of the last share bounds
   int integrate_bits_ = 0, hold_bits_ = 0;    // group bits: integrated, held (immovable())
   lubricated::liggghts::FixLubricatedFilmBudget *budget_ = nullptr;
+  lubricated::liggghts::FixLubricatedStepVelocity *step_velocity_ = nullptr;
   bool budget_on_ = false;
   bool warned_ = false;
   std::string message_;

@@ -212,6 +212,9 @@ void PairLubricatedSpringDashpot::init_style()
   // The vectorised loops need the step velocity in v and exactly integrated normal forces;
   // type pairs with other coefficients are grouped by type pair (vector_forces).
   vector_loops = vector_enabled && !any_tangential && !midpoint;
+  // With friction or rolling but no shear film, the pairs apart over a step feel the normal
+  // film alone: they take the vectorised film loop too.
+  film_loops = vector_enabled && any_tangential && any_wet && !any_shear_film && !midpoint;
   uniform_models = true;
   double first[lub::Coefficients::packed_size], other[lub::Coefficients::packed_size];
   coeffs[index(1, 1)].pack(first);
@@ -220,11 +223,14 @@ void PairLubricatedSpringDashpot::init_style()
       if (!setflag[i][j]) continue;
       coeffs[index(i, j)].pack(other);
       vector_loops = vector_loops && coeffs[index(i, j)].exact_contact;
+      film_loops = film_loops && coeffs[index(i, j)].exact_contact;
       uniform_models = uniform_models && std::equal(first, first + lub::Coefficients::packed_size, other);
     }
   if (vector_loops && comm->me == 0)
     utils::logmesg(lmp, "{}: pairs in sustained contact{} take vectorised loops\n", STYLE,
                    any_wet ? " and pairs apart over a step" : "");
+  if (film_loops && comm->me == 0)
+    utils::logmesg(lmp, "{}: pairs apart over a step take the vectorised film loop\n", STYLE);
 
   // The many-body film budget covers the films of these pairs and of the wet walls.
   walls.clear();
@@ -353,7 +359,7 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
   // A scene pays only for what it uses: one loop per combination.
   if (any_tangential) {
     if (any_wet)
-      eval<true, true>();
+      film_loops && (!update->setupflag || continued) ? eval<true, true, true>() : eval<true, true>();
     else
       eval<false, true>();
   } else {

@@ -70,6 +70,7 @@ class PairLubricatedSpringDashpot : public Pair {
   bool vector_enabled = true;
   bool uniform_models = true;
   bool vector_loops = false;
+  bool film_loops = false;    // friction or rolling without shear film: film-only pairs vectorised
   std::vector<int> film_i, film_j;
   std::vector<int> group_count, group_keys;    // grouping a chunk by type pair
 

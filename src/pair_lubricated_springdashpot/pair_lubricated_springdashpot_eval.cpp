@@ -163,7 +163,8 @@ void PairLubricatedSpringDashpot::update_step_reach(double **v)
 
 // Pass 1, branch-free: keep the list entries that can act within the coming step: in the
 // film's reach (the largest of the two types) or in contact, or within what both atoms can
-// move in a step. With friction, entries holding an elongation to forget are kept too.
+// move in a step. With friction, entries holding an elongation to forget are kept too (never
+// film-only: the whole contact forgets it).
 // Whether an entry is kept follows no pattern a branch predictor could learn, hence no branch.
 // SPLIT: entries apart by more than both atoms can move in the step (no contact can start) but
 // in the film's reach go to the film-only list instead. Returns the candidates' count.
@@ -212,12 +213,12 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> int PairLubricatedSpringDashpot
       out_j[ncandidate] = j;
       if (TANGENTIAL) out_jj[ncandidate] = jj;
       int keep = rsq < (SPLIT ? touch * touch : near * near);
+      if (TANGENTIAL && touched) keep |= touched[jj];
       if (WET && SPLIT) {
         film_out_i[nfilm] = i;
         film_out_j[nfilm] = j;
         nfilm += (rsq < near * near) & !keep;
       }
-      if (TANGENTIAL && touched) keep |= touched[jj];
       ncandidate += keep;
     }
   }
@@ -376,16 +377,19 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   {
     evaluate_pair<WET, TANGENTIAL>(loop, i, j, jj);
   };
-  if (SPLIT) {
+  if (SPLIT && !TANGENTIAL) {
     vector_forces(ncandidate, nfilm, v, evaluate);
     return;
   }
+  // With friction or rolling (no shear film): the film-only pairs vectorised, the rest whole.
+  if (SPLIT) vector_forces(0, nfilm, v, evaluate);
   for (int c = 0; c < ncandidate; c++)
     evaluate(candidate_i[c], candidate_j[c], TANGENTIAL ? candidate_jj[c] : 0);
 }
 
 // The loops compute() runs: one per combination (a scene pays only for what it uses).
 template void PairLubricatedSpringDashpot::eval<true, true>();
+template void PairLubricatedSpringDashpot::eval<true, true, true>();
 template void PairLubricatedSpringDashpot::eval<false, true>();
 template void PairLubricatedSpringDashpot::eval<true, false>();
 template void PairLubricatedSpringDashpot::eval<false, false>();

@@ -111,6 +111,11 @@ VECTOR_CASES = {
     # a model per type pair, dry and wet mixed: grouped by type pair
     "mixed": "pair_coeff 1 1 0.8 ncontact 8 {film}\npair_coeff 1 2 0.6 ncontact 6\n"
              "pair_coeff 2 2 0.9 ncontact 10 viscosity {mu2} grid 1e-4",
+    # friction and rolling without shear film: the pairs apart over a step take the film loop
+    "wet friction": "pair_coeff * * 0.8 ncontact 8 {film} friction 0.4 rolling 0.02 shearfilm no",
+    "mixed friction": "pair_coeff 1 1 0.8 ncontact 8 {film} friction 0.3 shearfilm no\n"
+                      "pair_coeff 1 2 0.6 ncontact 6 friction 0.5\n"
+                      "pair_coeff 2 2 0.9 ncontact 10 viscosity {mu2} grid 1e-4 rolling 0.02 shearfilm no",
 }
 
 
@@ -129,17 +134,21 @@ def test_vectorised_loops_agree_with_the_general_loop(lmp, case):
     # Every 10 steps: the spring energy and the pressure (virial) tallied by the loops too.
     two_types = two_types.replace("thermo 100\nthermo_style custom step ke pe f_walls",
                                   "thermo 10\nthermo_style custom step ke pe press")
+    spins = 'compute spin all erotate/sphere\nrun 0\nprint "RESULT w $(c_spin:%.17g) $(ke:%.17g)"\n'
+    two_types += spins if "friction" in case else ""
     vectorised = lmp(two_types + dump_state())
-    assert "take vectorised loops" in lmp.log
+    assert ("take the vectorised film loop" if "friction" in case else "take vectorised loops") in lmp.log
     assert collisions_happened(lmp.log)
     vectorised_thermo = thermo_rows(lmp.log)
     general = two_types.replace("pair_style lubricated/springdashpot",
                                 "pair_style lubricated/springdashpot vector no")
     reference = lmp(general + dump_state())
-    assert "take vectorised loops" not in lmp.log
+    assert "vectorised" not in lmp.log
     assert_same_state(vectorised, reference)
+    if "friction" in case:    # friction acts: the spheres spin (rotational against translational energy)
+        assert vectorised["w"][0] > 1e-3 * vectorised["w"][1]
     reference_thermo = thermo_rows(lmp.log)
-    assert len(vectorised_thermo) == 61 and sum(row[2] > 0.0 for row in vectorised_thermo) >= 3
+    assert len(vectorised_thermo) == (62 if "friction" in case else 61) and sum(row[2] > 0.0 for row in vectorised_thermo) >= 3
     for mine, theirs in zip(vectorised_thermo, reference_thermo):
         assert mine == pytest.approx(theirs, rel=1e-10, abs=1e-20)
 

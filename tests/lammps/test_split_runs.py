@@ -1,5 +1,5 @@
 """A run continues as the uninterrupted run (issue 18), whatever interrupts it: several `run N`,
-any number of `run 0`, `reset_timestep`, write_restart and a new process reading it, on 1, 2
+any number of `run 0`, `run N pre no`, `reset_timestep`, write_restart and a new process reading it, on 1, 2
 and 4 ranks. The set-up of each run evaluates the contacts as the last step did, with that
 step's velocities restored from v and f (src/fix_step_velocity), and lengthens no tangential
 spring.
@@ -68,6 +68,10 @@ def test_interrupted_runs_continue_as_one_run(lmp, nprocs, wet):
         "runs": runs_with([]),
         "run 0": runs_with(["run 0", "run 0", "run 0"]),
         "reset_timestep": runs_with(["reset_timestep 0"]),
+        # No set-up at all: the next run starts from the last step's forces and history.
+        "pre no": [f"{command} pre no" if k else command for k, command in enumerate(runs_with([]))],
+        # A set-up (run 0) and then a run without one.
+        "run 0, pre no": [line.replace("run 263", "run 263 pre no") for line in runs_with(["run 0"])],
     }
     for case, commands in cases.items():
         state = run(lmp, interrupted(commands, wet), nprocs)

@@ -66,6 +66,16 @@ CASES = {
     # LIGGGHTS's granular styles refuse such units themselves, before the model is set up.
     "units metal": (("units si", "units metal"), ["non-consistent unit system", "si,cgs or lj"]),
     "units real": (("units si", "units real"), ["non-consistent unit system", "si,cgs or lj"]),
+    # The text of every property the model reads is checked as LAMMPS checks a number (issue 18:
+    # LIGGGHTS itself reads "1e" as 1).
+    "viscosity text": (("lubricatedViscosity scalar 0.00177", "lubricatedViscosity scalar 1e-3e"),
+                       ["property/global lubricatedViscosity: '1e-3e77777777777779' is not a number"]),
+    "steps text": (("lubricatedContactSteps scalar 8", "lubricatedContactSteps scalar 8steps"),
+                   ["property/global lubricatedContactSteps: '8steps' is not a number"]),
+    "restitution text": (("peratomtypepair 2 0.9 0.9 0.9 0.9", "peratomtypepair 2 0.9 0.9 0.9 .9.9"),
+                         ["property/global coefficientRestitution: '.9.9' is not a number"]),
+    "restitution hex": (("peratomtypepair 2 0.9 0.9 0.9 0.9", "peratomtypepair 2 0.9 0.9 0.9 0x1p-1"),
+                        ["coefficientRestitution: '0x1p-1' is not a number"]),
     "missing restitution": (("fix m1 all property/global coefficientRestitution peratomtypepair 2 0.9 0.9 0.9 0.9", ""),
                             ["coefficientRestitution", "model lubricated"]),
 }
@@ -83,6 +93,19 @@ def test_error_names_the_property(run, case):
 
 def test_good_input_runs(run):
     assert run.lig(GOOD)["e"] > 0.0
+
+
+@pytest.mark.parametrize("launcher", [False, True], ids=["preload", "launcher"])
+def test_property_text_is_checked_with_either_program(run, launcher):
+    """Numbers in every form LAMMPS accepts pass and give the same run; a malformed one stops
+    with the property and its text, whether the library is preloaded or linked."""
+    plain = run.lig(GOOD, launcher=launcher)
+    forms = GOOD.replace("lubricatedContactSteps scalar 8", "lubricatedContactSteps scalar +8.0E+00").replace(
+        "peratomtypepair 2 0.9 0.9 0.9 0.9", "peratomtypepair 2 9e-1 .9 0.90 9.E-1")
+    assert forms != GOOD and run.lig(forms, launcher=launcher)["e"] == plain["e"]
+    run.lig(GOOD.replace("lubricatedActivation scalar 0.09375", "lubricatedActivation scalar 1e"),
+            launcher=launcher, check=False)
+    assert "lubricatedActivation: '1e' is not a number" in run.log
 
 
 def test_stock_liggghts_without_the_library_fails(run):
