@@ -60,7 +60,8 @@ FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) : Fix(
   if (iwall == narg)
     error->all(FLERR, "{}: missing wall style (expected xplane, yplane or zplane lo hi, or zcylinder R)", STYLE);
   parse_walls(narg, arg, iwall);
-  time_origin = wall_time();
+  step_origin = update->ntimestep;
+  motion_dt = update->dt;
 
   scalar_flag = 1;    // elastic energy stored in the wall springs
   vector_flag = 1;    // total force of the walls on the group
@@ -70,7 +71,10 @@ FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) : Fix(
   extvector = 1;
   energy_global_flag = 1;
   dynamic_group_allow = 1;
-  restart_global = 1;    // the motion's time origin
+  restart_global = 1;    // the motion's clock
+  // A moving wall follows the steps since its definition: reset_timestep is refused (as for
+  // fix move).
+  time_depend = motion.moves() ? 1 : 0;
 
   if (coeffs.tangential() && !(atom->omega_flag && atom->torque_flag))
     error->all(FLERR,
@@ -121,7 +125,7 @@ void FixWallLubrication::init()
     for (const std::string &w : check.warnings)
       error->warning(FLERR, "{}: {}", STYLE, w);
   }
-  reset_dt();
+  reset_dt();    // and the motion's clock: a time step changed before this run counts from now
   // Under fix nve/sphere/midpoint the step-exact integration uses the velocity over the
   // last step, which that fix provides (see pair_style lubricated/springdashpot).
   midpoint = nullptr;
@@ -140,6 +144,7 @@ void FixWallLubrication::init()
 // lubricated/coefficients.h settle_contact_time).
 void FixWallLubrication::reset_dt()
 {
+  rebase_clock();
   model = lub::make_contact_model(coeffs, lub::Partner::wall, update->dt, &model);
 }
 

@@ -69,8 +69,12 @@ class FixWallLubrication : public Fix {
   std::vector<lubricated::WallSurface> walls;    // lo (or the cylinder), hi; history slots 0, 1
   std::vector<int> slots;                        // each wall's history slot
   lubricated::WallMotion motion;
-  double time_origin = 0.0;    // simulation time at which the fix was defined (restart keeps it)
-  double wall_time() const;    // time since then
+  // The motion's clock: time since the fix was defined = elapsed + (step - step_origin) motion_dt,
+  // rebased when the time step changes; in the restart file, so that a restarted run moves on.
+  double elapsed = 0.0, motion_dt = 0.0;
+  bigint step_origin = 0;
+  double wall_time() const;
+  void rebase_clock();
   std::string describe_walls() const;
   void parse_walls(int narg, char **arg, int iwall);
   void parse_motion(int narg, char **arg, int iarg);

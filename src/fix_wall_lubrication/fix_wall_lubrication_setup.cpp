@@ -125,11 +125,21 @@ void FixWallLubrication::parse_motion(int narg, char **arg, int iarg)
   }
 }
 
-// Simulation time since the fix was defined (LAMMPS keeps the time through changes of the
-// time step and reset_timestep; the origin is restored from a restart file).
+// Time since the fix was defined: whole steps since step_origin at the time step motion_dt, the
+// time before them in elapsed (an uninterrupted run and a restarted one get the same sums).
 double FixWallLubrication::wall_time() const
 {
-  return update->atime + static_cast<double>(update->ntimestep - update->atimestep) * update->dt - time_origin;
+  return elapsed + static_cast<double>(update->ntimestep - step_origin) * motion_dt;
+}
+
+// The time step changes (the timestep command after a run, fix dt/reset): the steps so far
+// counted at the old one.
+void FixWallLubrication::rebase_clock()
+{
+  if (update->dt == motion_dt) return;
+  elapsed = wall_time();
+  step_origin = update->ntimestep;
+  motion_dt = update->dt;
 }
 
 std::string FixWallLubrication::describe_walls() const
@@ -182,7 +192,7 @@ void FixWallLubrication::warn_behind()
 void FixWallLubrication::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  const double list[1] = {time_origin};
+  const double list[3] = {elapsed, static_cast<double>(step_origin), motion_dt};
   const int size = sizeof(list);
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(list, sizeof(list), 1, fp);
@@ -190,9 +200,11 @@ void FixWallLubrication::write_restart(FILE *fp)
 
 void FixWallLubrication::restart(char *buf)
 {
-  double origin;
-  memcpy(&origin, buf, sizeof(double));
-  time_origin = origin;
+  double list[3];
+  memcpy(list, buf, sizeof(list));
+  elapsed = list[0];
+  step_origin = static_cast<bigint>(list[1]);
+  motion_dt = list[2];
 }
 
 void FixWallLubrication::grow_arrays(int nmax)

@@ -33,6 +33,10 @@ struct WallMotion {
   int shear_dim = -1;
   double shear_speed = 0.0;
 
+  bool moves() const
+  {
+    return translation.x != 0.0 || translation.y != 0.0 || translation.z != 0.0 || wiggle_dim >= 0 || shear_dim >= 0;
+  }
   // Displacement of the wall frame at time t.
   Vec3 displacement(double t) const
   {
@@ -110,8 +114,7 @@ inline WallPoint wall_point(const WallSurface &w, const double *x, double sphere
 // (shift_before): the step-exact contact's g_0 = h - u_n dt, exact on a curved wall too. A plane
 // gives (v - V_wall) . n, V_wall the frame's velocity over the step.
 inline double normal_step_velocity(const WallSurface &w, const WallPoint &now, const double *x, const double *v,
-                                   double sphere_radius, const Vec3 &shift_before, const Vec3 &wall_velocity,
-                                   double dt)
+                                   double sphere_radius, const Vec3 &shift_before, const Vec3 &wall_velocity, double dt)
 {
   if (!w.cylinder) {
     const double v_wall = w.axis == 0 ? wall_velocity.x : w.axis == 1 ? wall_velocity.y : wall_velocity.z;
