@@ -5,7 +5,7 @@ BUILD  := build
 JOBS   ?= 2
 
 .PHONY: all setup setup-liggghts build demo test test-kernel test-lammps test-liggghts bench format format-check \
-        bench-liggghts report fluidized-bed liggghts-demo clean
+        bench-liggghts report fluidized-bed rotating-drum liggghts-demo clean
 
 all: build
 
@@ -66,6 +66,11 @@ report: build
 # The 2133-sphere fluidised bed on 2 MPI ranks: dumps and a solid-fraction profile.
 fluidized-bed: build
 	$(PY) examples/fluidized_bed/run_fluidized_bed.py --out $(BUILD)/fluidized_bed
+
+# A dry and a wet rotating drum (fix wall/lubrication zcylinder shear): the dynamic angle of
+# repose and rotating_drum.png (under a minute).
+rotating-drum: build
+	$(PY) examples/rotating_drum/run_rotating_drum.py --out $(BUILD)/rotating_drum
 
 clean:
 	rm -rf $(BUILD)
