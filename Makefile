@@ -5,8 +5,8 @@ BUILD  := build
 JOBS   ?= 2
 
 .PHONY: all setup setup-liggghts build demo test test-kernel test-lammps test-liggghts bench format format-check \
-        bench-liggghts bench-beds report fluidized-bed settling-sphere liggghts-demo shear-cell clean \
-        test-versions test-matrix test-openmpi test-pip
+        bench-liggghts bench-beds report fluidized-bed settling-sphere rotating-drum liggghts-demo shear-cell \
+        clean test-versions test-matrix test-openmpi test-pip
 
 all: build
 
@@ -108,6 +108,11 @@ shear-cell: build
 # first rebound against e_d exp(-35/St), and the same with the activation given directly.
 settling-sphere: build
 	$(PY) examples/settling_sphere/plot_settling_sphere.py --out $(BUILD)/settling_sphere
+
+# A dry and a wet rotating drum (fix wall/lubrication zcylinder shear): the dynamic angle of
+# repose and rotating_drum.png (under a minute).
+rotating-drum: build
+	$(PY) examples/rotating_drum/run_rotating_drum.py --out $(BUILD)/rotating_drum
 
 clean:
 	rm -rf $(BUILD)

@@ -1,9 +1,11 @@
 /* ----------------------------------------------------------------------
    fix wall/lubrication (see doc/fix_wall_lubrication.rst)
 
-   fix ID group wall/lubrication e_d [keyword value ...] wallstyle lo hi
+   fix ID group wall/lubrication e_d [keyword value ...] wallstyle args [motion ...]
      keywords as in pair_coeff of pair_style lubricated/springdashpot
-     wallstyle = xplane, yplane or zplane; lo, hi = wall positions or NULL
+     wallstyle = xplane, yplane or zplane lo hi (NULL for none), or zcylinder R
+     motion = translate vx vy vz, wiggle dim A T, shear dim v, side in|out (zcylinder)
+   Parsing, per-atom history and restart: fix_wall_lubrication_setup.cpp.
 ------------------------------------------------------------------------- */
 
 #include "fix_wall_lubrication.h"
@@ -45,29 +47,21 @@ FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) : Fix(
     error->all(FLERR, "{} requires atom_style sphere (per-atom radius and rmass)", STYLE);
 
   // Coefficient words run up to the wall style, exactly as in pair_coeff.
+  auto is_wall_style = [](const char *w) {
+    return strcmp(w, "xplane") == 0 || strcmp(w, "yplane") == 0 || strcmp(w, "zplane") == 0 ||
+           strcmp(w, "zcylinder") == 0;
+  };
   int iwall = 3;
-  while (iwall < narg && strcmp(arg[iwall], "xplane") != 0 && strcmp(arg[iwall], "yplane") != 0 &&
-         strcmp(arg[iwall], "zplane") != 0)
+  while (iwall < narg && !is_wall_style(arg[iwall]))
     iwall++;
   std::vector<std::string> words(arg + 3, arg + iwall);
   const std::string problem = lub::parse_coefficients(words, 0, coeffs);
   if (!problem.empty()) error->all(FLERR, "{}: {}", STYLE, problem);
-  if (iwall == narg) error->all(FLERR, "{}: missing wall style (expected xplane, yplane or zplane lo hi)", STYLE);
-  if (iwall + 3 > narg) error->all(FLERR, "{}: {} needs lo and hi positions", STYLE, arg[iwall]);
-  if (iwall + 3 < narg) error->all(FLERR, "{}: unknown keyword '{}' after the wall positions", STYLE, arg[iwall + 3]);
-
-  axis = arg[iwall][0] - 'x';
-  if (axis == 2 && domain->dimension == 2) error->all(FLERR, "{}: zplane is not allowed in 2d", STYLE);
-  if (strcmp(arg[iwall + 1], "NULL") != 0) {
-    has_lo = true;
-    lo = utils::numeric(FLERR, arg[iwall + 1], false, lmp);
-  }
-  if (strcmp(arg[iwall + 2], "NULL") != 0) {
-    has_hi = true;
-    hi = utils::numeric(FLERR, arg[iwall + 2], false, lmp);
-  }
-  if (!has_lo && !has_hi) error->all(FLERR, "{}: both walls are NULL", STYLE);
-  if (has_lo && has_hi && lo >= hi) error->all(FLERR, "{}: lo = {} must be below hi = {}", STYLE, lo, hi);
+  if (iwall == narg)
+    error->all(FLERR, "{}: missing wall style (expected xplane, yplane or zplane lo hi, or zcylinder R)", STYLE);
+  parse_walls(narg, arg, iwall);
+  step_origin = update->ntimestep;
+  motion_dt = update->dt;
 
   scalar_flag = 1;    // elastic energy stored in the wall springs
   vector_flag = 1;    // total force of the walls on the group
@@ -77,6 +71,10 @@ FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) : Fix(
   extvector = 1;
   energy_global_flag = 1;
   dynamic_group_allow = 1;
+  restart_global = 1;    // the motion's clock
+  // A moving wall follows the steps since its definition: reset_timestep is refused (as for
+  // fix move).
+  time_depend = motion.moves() ? 1 : 0;
 
   if (coeffs.tangential() && !(atom->omega_flag && atom->torque_flag))
     error->all(FLERR,
@@ -127,7 +125,7 @@ void FixWallLubrication::init()
     for (const std::string &w : check.warnings)
       error->warning(FLERR, "{}: {}", STYLE, w);
   }
-  reset_dt();
+  reset_dt();    // and the motion's clock: a time step changed before this run counts from now
   // Under fix nve/sphere/midpoint the step-exact integration uses the velocity over the
   // last step, which that fix provides (see pair_style lubricated/springdashpot).
   midpoint = nullptr;
@@ -136,10 +134,9 @@ void FixWallLubrication::init()
   step_velocity = midpoint ? nullptr : dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
   pair = dynamic_cast<PairLubricatedSpringDashpot *>(force->pair_match("lubricated/springdashpot", 1));
   contact_mass.init(STYLE, !pair);    // the pair style logs them where there is one
-  // Point particles are refused; with a grid spacing the smallest spheres have the largest
-  // eps_al (at most 1, as activation).
-  const std::string problem = lub::validate_grid_for_radius(coeffs, smallest_sphere_radius(lmp, STYLE, groupbit));
-  if (!problem.empty()) error->all(FLERR, "{}: {}", STYLE, problem);
+  // Point particles are refused; with a grid spacing the smallest film radii have the largest
+  // eps_al (at most 1, as activation); spheres must fit inside a cylinder.
+  check_sphere_sizes();
   films_pending = false;
 }
 
@@ -147,6 +144,7 @@ void FixWallLubrication::init()
 // lubricated/coefficients.h settle_contact_time).
 void FixWallLubrication::reset_dt()
 {
+  rebase_clock();
   model = lub::make_contact_model(coeffs, lub::Partner::wall, update->dt, &model);
 }
 
@@ -197,18 +195,19 @@ void FixWallLubrication::add_film_loads(double *load, int nlocal) const
 }
 
 // Every atom of the group counts as near each wet wall: the bound of a wall contact is small
-// (m_e = m) and the test runs once per neighbor list build.
+// (m_e = m) and the test runs once per neighbor list build. A curved wall's film has R_f.
 void FixWallLubrication::add_film_share_bounds(double *bound, int nlocal) const
 {
   if (!model.normal.lubrication.active()) return;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *mask = atom->mask;
-  const int sides = (has_lo ? 1 : 0) + (has_hi ? 1 : 0);
   const bool shear_film = model.tangential.film_active();    // no bound on its share yet: 1
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
-      bound[i] +=
-          sides * (shear_film ? 1.0 : lub::film_share_bound(model.normal.lubrication, radius[i], rmass[i], update->dt));
+      for (const lub::WallSurface &w : walls)
+        bound[i] += shear_film ? 1.0
+                               : lub::film_share_bound(model.normal.lubrication, w.film_radius(radius[i]), rmass[i],
+                                                       update->dt);
 }
 
 // The deferred wall films, scaled by the atoms' film budget: the pair style's where it keeps
@@ -226,11 +225,14 @@ void FixWallLubrication::apply_films()
   double **torque = atom->torque;
   for (int i = 0; i < nlocal; i++) {
     const double *fs = shear ? shear + 6 * i : nullptr;
-    if (film_force[i] == 0.0 && !(fs && (fs[0] != 0.0 || fs[1] != 0.0 || fs[2] != 0.0))) continue;
+    const double *ff = &film_force[3 * i];
+    if (ff[0] == 0.0 && ff[1] == 0.0 && ff[2] == 0.0 && !(fs && (fs[0] != 0.0 || fs[1] != 0.0 || fs[2] != 0.0)))
+      continue;
     const double scale = by_pair ? pair->film_scale(i) : own ? lub::film_scale_of_load(film_load[i]) : 1.0;
-    const double force = scale * film_force[i];
-    f[i][axis] += force;
-    local_sums[1 + axis] += force;
+    for (int d = 0; d < 3; d++) {
+      f[i][d] += scale * film_force[3 * i + d];
+      local_sums[1 + d] += scale * film_force[3 * i + d];
+    }
     if (fs) {
       for (int d = 0; d < 3; d++) {
         f[i][d] += scale * fs[d];
@@ -264,27 +266,40 @@ void FixWallLubrication::compute_walls(bool defer_films)
   films_pending = defer_films = defer_films && model.normal.lubrication.active();
   shear_pending = defer_films && model.tangential.film_active();
   if (defer_films) {
-    film_force.assign(nlocal, 0.0);
+    film_force.assign(3 * static_cast<std::size_t>(nlocal), 0.0);
     film_load.assign(nlocal, 0.0);
   }
   if (shear_pending) shear_film.assign(6 * static_cast<std::size_t>(nlocal), 0.0);
   const double kick_time =
       lub::film_kick_time(update->dt, when != lub::Evaluation::step, when == lub::Evaluation::midpoint_start);
-  // Atom i (contact mass `mass`) at the wall of this side (+1: lo wall, normal along +axis; -1:
-  // hi wall, normal along -axis), where the contact acts. Out of line: most atoms are far from
-  // the walls, and their loop stays short.
-  auto wall_contact = [&](int i, int side, double gap, double u_n, double mass, double *h) __attribute__((noinline))
+
+  // The wall frame now and a step ago. A step evaluation takes the wall's motion over the last
+  // step, as the spheres' velocities are (the gap a step ago is then exactly h - u_n dt); a run's
+  // first evaluation, with full-step velocities, its velocity now (lubricated/wall_geometry.h).
+  const double dt = update->dt, t = wall_time();
+  const lub::Vec3 shift = motion.displacement(t);
+  const bool over_step = when == lub::Evaluation::step;
+  const lub::Vec3 wall_velocity = over_step ? motion.step_velocity(t, dt) : motion.velocity(t);
+  const lub::Vec3 shift_before =
+      over_step ? motion.displacement(t - dt) : lub::minus(shift, lub::scaled(wall_velocity, dt));
+
+  // Atom i (contact mass `mass`) at wall w, gap and normal at p, where the contact acts. Out of
+  // line: most atoms are far from the walls, and their loop stays short.
+  auto wall_contact = [&](int i, const lub::WallSurface &w, const lub::WallPoint &at, double u_n, double film_radius,
+                          double mass, double *h) __attribute__((noinline))
   {
     const double r = radius[i];
     lub::ContactPoint p;
-    p.gap = gap, p.u_n = u_n, p.reduced_mass = mass, p.film = lub::FilmRadius(r);
+    p.gap = at.gap, p.u_n = u_n, p.reduced_mass = mass, p.film = lub::FilmRadius(film_radius);
     lub::HistorySlot slot;
     if (tangential_on) {
-      (axis == 0 ? p.n.x : axis == 1 ? p.n.y : p.n.z) = side;
-      p.dv = {v[i][0], v[i][1], v[i][2]};
-      p.omega_i = {omega[i][0], omega[i][1], omega[i][2]};
-      p.radius_i = r, p.reduced_radius = r;
-      p.mass_i = rmass[i];    // the sphere's own inertia, also in a rigid body
+      // The sphere's motion relative to the wall frame gives the slip at the contact point.
+      const lub::Vec3 v_frame = lub::frame_velocity(w, motion, wall_velocity, shift, x[i]);
+      p.n = at.n;
+      p.dv = {v[i][0] - v_frame.x, v[i][1] - v_frame.y, v[i][2] - v_frame.z};
+      p.omega_i = {omega[i][0], omega[i][1], omega[i][2] - lub::wall_spin(w, motion)};
+      p.radius_i = r, p.reduced_radius = film_radius;    // R_f: the shear film's and rolling radius
+      p.mass_i = rmass[i];                               // the sphere's own inertia, also in a rigid body
       if (h) slot = {h, h[3] != 0.0, !update->setupflag};
     }
     const lub::ContactForces c =
@@ -292,17 +307,22 @@ void FixWallLubrication::compute_walls(bool defer_films)
                       : lub::contact_forces<false, lub::Partner::wall>(model, p, slot, when);
     const lub::NormalForce &fn = c.normal;
     if (h) h[3] = slot.touched;
-    double force = side * fn.total();
+    double force = fn.total();
     double share = 0.0;
     if (defer_films) {    // applied in post_force, within the atom's film budget
-      force = side * fn.contact;
-      film_force[i] += side * fn.lubrication;
+      force = fn.contact;
+      film_force[3 * i] += fn.lubrication * at.n.x;
+      film_force[3 * i + 1] += fn.lubrication * at.n.y;
+      film_force[3 * i + 2] += fn.lubrication * at.n.z;
       share = lub::film_share(fn.lubrication, mass, u_n, kick_time);
       if (!shear_pending) film_load[i] += share;
     }
-    f[i][axis] += force;
+    const double fn_xyz[3] = {force * at.n.x, force * at.n.y, force * at.n.z};
+    for (int d = 0; d < 3; d++) {
+      f[i][d] += fn_xyz[d];
+      local_sums[1 + d] += fn_xyz[d];
+    }
     local_sums[0] += fn.energy;
-    local_sums[1 + axis] += force;
     if (!tangential_on) return;
     // The shear film deferred with the normal one (its force and torque); the contact's share
     // the larger of the two films' (film_budget.h).
@@ -316,23 +336,25 @@ void FixWallLubrication::compute_walls(bool defer_films)
     torque[i][0] += c.torque_i.x, torque[i][1] += c.torque_i.y, torque[i][2] += c.torque_i.z;
     local_sums[1] += c.tangential.x, local_sums[2] += c.tangential.y, local_sums[3] += c.tangential.z;
   };
-  // Both walls on atom i of contact mass `mass`.
+  // Every wall on atom i of contact mass `mass`.
   auto walls_of_atom = [&](int i, double mass) __attribute__((always_inline))
   {
     const double r = radius[i];
-    for (int side = 1; side >= -1; side -= 2) {
-      if (side == 1 ? !has_lo : !has_hi) continue;
-      const double gap = side * (x[i][axis] - (side == 1 ? lo : hi)) - r;
-      const double u_n = side * (midpoint && model.normal.exact ? midpoint->step_velocity(i)[axis] : v[i][axis]);
+    const double *v_step = midpoint && model.normal.exact ? midpoint->step_velocity(i) : v[i];
+    for (std::size_t k = 0; k < walls.size(); k++) {
+      const lub::WallSurface &w = walls[k];
+      const lub::WallPoint at = lub::wall_point(w, x[i], r, shift);
+      const double u_n = lub::normal_step_velocity(w, at, x[i], v_step, r, shift_before, wall_velocity, dt);
+      const double film_radius = w.film_radius(r);
       // This wall's friction history of the atom (elongation x y z, touched); out of reach, forgotten.
-      double *h = history ? history[i] + (side == 1 ? 0 : HISTORY_PER_WALL) : nullptr;
+      double *h = history ? history[i] + slots[k] * HISTORY_PER_WALL : nullptr;
       // A centre behind the wall (a wall placed through or beyond the atoms) is not in contact:
       // the overlap would exceed a radius and launch the atom (warn_behind counts them).
-      if (gap >= -r && model.normal.acts(gap, r, u_n))
-        wall_contact(i, side, gap, u_n, mass, h);
+      if (at.gap >= -r && model.normal.acts(at.gap, film_radius, u_n))
+        wall_contact(i, w, at, u_n, film_radius, mass, h);
       else if (h && h[3] != 0.0)
-        for (int k = 0; k < HISTORY_PER_WALL; k++)
-          h[k] = 0.0;
+        for (int m = 0; m < HISTORY_PER_WALL; m++)
+          h[m] = 0.0;
     }
   };
 
@@ -351,84 +373,6 @@ void FixWallLubrication::compute_walls(bool defer_films)
   for (int i = 0; i < nlocal; i++)
     if ((mask[i] & groupbit) && inverse_mass[i] > 0.0) walls_of_atom(i, 1.0 / inverse_mass[i]);
   warn_behind();
-}
-
-// Once per run set-up: atoms whose centres lie behind a wall are left alone by it.
-void FixWallLubrication::warn_behind()
-{
-  if (!update->setupflag) return;
-  bigint count = 0, total = 0;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) count += (has_lo && atom->x[i][axis] < lo) + (has_hi && atom->x[i][axis] > hi);
-  MPI_Allreduce(&count, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (total > 0 && comm->me == 0)
-    error->warning(FLERR,
-                   "{}: {} atom(s) have their centre behind a wall (lo = {}, hi = {}); the wall leaves them alone",
-                   STYLE, total, has_lo ? lub::detail::number(lo) : "NULL", has_hi ? lub::detail::number(hi) : "NULL");
-}
-
-void FixWallLubrication::grow_arrays(int nmax)
-{
-  memory->grow(history, nmax, HISTORY_SIZE, "wall/lubrication:history");
-}
-
-void FixWallLubrication::copy_arrays(int i, int j, int /*delflag*/)
-{
-  for (int k = 0; k < HISTORY_SIZE; k++)
-    history[j][k] = history[i][k];
-}
-
-void FixWallLubrication::set_arrays(int i)
-{
-  for (int k = 0; k < HISTORY_SIZE; k++)
-    history[i][k] = 0.0;
-}
-
-int FixWallLubrication::pack_exchange(int i, double *buf)
-{
-  for (int k = 0; k < HISTORY_SIZE; k++)
-    buf[k] = history[i][k];
-  return HISTORY_SIZE;
-}
-
-int FixWallLubrication::unpack_exchange(int nlocal, double *buf)
-{
-  for (int k = 0; k < HISTORY_SIZE; k++)
-    history[nlocal][k] = buf[k];
-  return HISTORY_SIZE;
-}
-
-int FixWallLubrication::pack_restart(int i, double *buf)
-{
-  buf[0] = HISTORY_SIZE + 1;
-  for (int k = 0; k < HISTORY_SIZE; k++)
-    buf[k + 1] = history[i][k];
-  return HISTORY_SIZE + 1;
-}
-
-void FixWallLubrication::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int k = 0; k < nth; k++)
-    m += static_cast<int>(extra[nlocal][m]);
-  for (int k = 0; k < HISTORY_SIZE; k++)
-    history[nlocal][k] = extra[nlocal][m + 1 + k];
-}
-
-int FixWallLubrication::size_restart(int /*i*/)
-{
-  return HISTORY_SIZE + 1;
-}
-
-int FixWallLubrication::maxsize_restart()
-{
-  return HISTORY_SIZE + 1;
-}
-
-double FixWallLubrication::memory_usage()
-{
-  return history ? static_cast<double>(atom->nmax) * HISTORY_SIZE * sizeof(double) : 0.0;
 }
 
 double FixWallLubrication::compute_scalar()

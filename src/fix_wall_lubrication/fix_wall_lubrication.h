@@ -1,7 +1,8 @@
 /* -*- c++ -*- ----------------------------------------------------------
-   fix wall/lubrication: planar walls with the spring-dashpot contact and the
-   particle-wall lubrication film of Brandle de Motta et al. (CFM 2011).
-   The same kernel as pair_style lubricated/springdashpot, with m_e = m and lambda_pw.
+   fix wall/lubrication: planar or cylindrical walls, at rest or moving, with the
+   spring-dashpot contact and the particle-wall lubrication film of Brandle de Motta et al.
+   (CFM 2011). The same kernel as pair_style lubricated/springdashpot, with m_e = m and
+   lambda_pw (at a curved wall with the film radius R_f, lubricated/wall_curvature.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_WALL_LUBRICATION_H
@@ -11,7 +12,9 @@
 
 #include "contact_mass/contact_mass.h"
 #include "lubricated/contact.h"
+#include "lubricated/wall_geometry.h"
 
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -33,6 +36,9 @@ class FixWallLubrication : public Fix {
   void reset_dt() override;
   double compute_scalar() override;
   double compute_vector(int) override;
+  // The wall motion's time origin (global restart), so that a restarted run moves on.
+  void write_restart(FILE *) override;
+  void restart(char *) override;
 
   // Per-atom tangential elongation at each wall (friction only): migrates, restarts.
   void grow_arrays(int) override;
@@ -56,13 +62,23 @@ class FixWallLubrication : public Fix {
  protected:
   lubricated::Coefficients coeffs;
   lubricated::ContactModel model;    // derived from coeffs and dt
-  // Per atom and wall side (lo, hi): elongation x y z and a touched flag.
+  // Per atom and wall (lo or the cylinder, hi): elongation x y z and a touched flag.
   static constexpr int HISTORY_PER_WALL = 4, HISTORY_SIZE = 2 * HISTORY_PER_WALL;
   double **history = nullptr;
   bool keeps_history() const { return coeffs.friction > 0.0; }
-  int axis = -1;    // 0, 1, 2 for xplane, yplane, zplane
-  bool has_lo = false, has_hi = false;
-  double lo = 0.0, hi = 0.0;                      // wall positions (box units)
+  std::vector<lubricated::WallSurface> walls;    // lo (or the cylinder), hi; history slots 0, 1
+  std::vector<int> slots;                        // each wall's history slot
+  lubricated::WallMotion motion;
+  // The motion's clock: time since the fix was defined = elapsed + (step - step_origin) motion_dt,
+  // rebased when the time step changes; in the restart file, so that a restarted run moves on.
+  double elapsed = 0.0, motion_dt = 0.0;
+  bigint step_origin = 0;
+  double wall_time() const;
+  void rebase_clock();
+  std::string describe_walls() const;
+  void parse_walls(int narg, char **arg, int iwall);
+  void parse_motion(int narg, char **arg, int iarg);
+  void check_sphere_sizes();
   double local_sums[4] = {0.0, 0.0, 0.0, 0.0};    // energy, force on the group x y z
   double global_sums[4] = {0.0, 0.0, 0.0, 0.0};
   bool sums_reduced = false;
@@ -70,7 +86,7 @@ class FixWallLubrication : public Fix {
   class FixStepVelocity *step_velocity = nullptr;    // the last step's velocities for a set-up
   // A run computes the walls in pre_force, before the pair style, and applies their films in
   // post_force, scaled by the atoms' film budget: per owned atom, the wall films' force along
-  // the axis and their summed share (valid while films_pending).
+  // x y z and their summed share (valid while films_pending).
   class PairLubricatedSpringDashpot *pair = nullptr;
   std::vector<double> film_force, film_load;
   // With the shear film: per owned atom, its force x y z and torque x y z (both walls), deferred
