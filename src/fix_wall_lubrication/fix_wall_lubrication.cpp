@@ -39,7 +39,7 @@ namespace lub = lubricated;
 
 static constexpr const char *STYLE = "Fix wall/lubrication";
 
-FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), contact_mass(lmp)
+FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) : FixLubricatedWall(lmp, narg, arg)
 {
   ContactMass::watch_setforce(lmp);    // again after a `clear`
   require_supported_units(lmp, STYLE);
@@ -102,42 +102,12 @@ FixWallLubrication::~FixWallLubrication()
   memory->destroy(history);
 }
 
-// The shared fix that lets a run's set-up continue the last run (created here, after this fix
-// is in place, when no pair style made it).
-void FixWallLubrication::post_constructor()
-{
-  FixStepVelocity::find_or_create(lmp);
-}
-
-int FixWallLubrication::setmask()
-{
-  return (coeffs.wet() ? PRE_FORCE : 0) | POST_FORCE | MIN_POST_FORCE;
-}
-
 void FixWallLubrication::init()
 {
-  lub::settle_contact_time(coeffs, update->dt);
-  const lub::SetupCheck check = lub::check_setup(coeffs, lub::Partner::wall, update->dt);
-  if (!check.error.empty()) error->all(FLERR, "{}: {}", STYLE, check.error);
-  if (comm->me == 0) {
-    utils::logmesg(lmp, "{}: {}\n", STYLE, check.description);
-    if (!check.tangential.empty()) utils::logmesg(lmp, "{}: {}\n", STYLE, check.tangential);
-    for (const std::string &w : check.warnings)
-      error->warning(FLERR, "{}: {}", STYLE, w);
-  }
-  reset_dt();    // and the motion's clock: a time step changed before this run counts from now
-  // Under fix nve/sphere/midpoint the step-exact integration uses the velocity over the
-  // last step, which that fix provides (see pair_style lubricated/springdashpot).
-  midpoint = nullptr;
-  for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
-    midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
-  step_velocity = midpoint ? nullptr : dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
-  pair = dynamic_cast<PairLubricatedSpringDashpot *>(force->pair_match("lubricated/springdashpot", 1));
-  contact_mass.init(STYLE, !pair);    // the pair style logs them where there is one
+  init_model(STYLE, "");    // and the motion's clock (reset_dt): a time step changed before this run counts from now
   // Point particles are refused; with a grid spacing the smallest film radii have the largest
   // eps_al (at most 1, as activation); spheres must fit inside a cylinder.
   check_sphere_sizes();
-  films_pending = false;
 }
 
 // A new time step: the per-step constants follow it; k and c stay (t_c settled at the first run,
@@ -146,52 +116,6 @@ void FixWallLubrication::reset_dt()
 {
   rebase_clock();
   model = lub::make_contact_model(coeffs, lub::Partner::wall, update->dt, &model);
-}
-
-// A wet wall is computed before the pair style, its films applied after it (within the
-// budget); a dry wall has no film and is computed after the pair style as it always was.
-void FixWallLubrication::setup_pre_force(int /*vflag*/)
-{
-  if (update->whichflag == 1 && model.normal.lubrication.active()) compute_walls(true);
-}
-
-void FixWallLubrication::pre_force(int /*vflag*/)
-{
-  if (model.normal.lubrication.active()) compute_walls(true);
-}
-
-void FixWallLubrication::setup(int /*vflag*/)
-{
-  if (model.normal.lubrication.active())
-    apply_films();
-  else
-    compute_walls(false);
-}
-
-void FixWallLubrication::post_force(int /*vflag*/)
-{
-  if (model.normal.lubrication.active())
-    apply_films();
-  else
-    compute_walls(false);
-}
-
-// Minimisation: the walls in one go, films as each contact's own cap leaves them.
-void FixWallLubrication::min_setup(int /*vflag*/)
-{
-  compute_walls(false);
-}
-
-void FixWallLubrication::min_post_force(int /*vflag*/)
-{
-  compute_walls(false);
-}
-
-void FixWallLubrication::add_film_loads(double *load, int nlocal) const
-{
-  if (!films_pending) return;
-  for (int i = 0; i < nlocal; i++)
-    load[i] += film_load[i];
 }
 
 // Every atom of the group counts as near each wet wall: the bound of a wall contact is small
@@ -210,37 +134,10 @@ void FixWallLubrication::add_film_share_bounds(double *bound, int nlocal) const
                                                        update->dt);
 }
 
-// The deferred wall films, scaled by the atoms' film budget: the pair style's where it keeps
-// one (its loads include these walls), this fix's own without a lubricated pair style, none
-// under `limit pair`.
-void FixWallLubrication::apply_films()
+// A deferred wall film, scaled, in the outputs: the force on the group.
+void FixWallLubrication::tally_film(int /*i*/, const lub::Vec3 &force, const lub::Vec3 & /*moment*/)
 {
-  if (!films_pending) return;
-  films_pending = false;
-  double **f = atom->f;
-  const int nlocal = atom->nlocal;
-  const bool by_pair = pair && pair->keeps_film_budget();
-  const bool own = !pair;
-  const double *shear = shear_pending ? shear_film.data() : nullptr;
-  double **torque = atom->torque;
-  for (int i = 0; i < nlocal; i++) {
-    const double *fs = shear ? shear + 6 * i : nullptr;
-    const double *ff = &film_force[3 * i];
-    if (ff[0] == 0.0 && ff[1] == 0.0 && ff[2] == 0.0 && !(fs && (fs[0] != 0.0 || fs[1] != 0.0 || fs[2] != 0.0)))
-      continue;
-    const double scale = by_pair ? pair->film_scale(i) : own ? lub::film_scale_of_load(film_load[i]) : 1.0;
-    for (int d = 0; d < 3; d++) {
-      f[i][d] += scale * film_force[3 * i + d];
-      local_sums[1 + d] += scale * film_force[3 * i + d];
-    }
-    if (fs) {
-      for (int d = 0; d < 3; d++) {
-        f[i][d] += scale * fs[d];
-        torque[i][d] += scale * fs[3 + d];
-        local_sums[1 + d] += scale * fs[d];
-      }
-    }
-  }
+  local_sums[1] += force.x, local_sums[2] += force.y, local_sums[3] += force.z;
 }
 
 void FixWallLubrication::compute_walls(bool defer_films)

@@ -49,7 +49,7 @@ struct RegionAxis : Region {
 }    // namespace
 
 FixWallLubricationRegion::FixWallLubricationRegion(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), contact_mass(lmp)
+    FixLubricatedWall(lmp, narg, arg)
 {
   ContactMass::watch_setforce(lmp);
   require_supported_units(lmp, STYLE);
@@ -107,16 +107,6 @@ FixWallLubricationRegion::~FixWallLubricationRegion()
   memory->destroy(history);
 }
 
-void FixWallLubricationRegion::post_constructor()
-{
-  FixStepVelocity::find_or_create(lmp);
-}
-
-int FixWallLubricationRegion::setmask()
-{
-  return (coeffs.wet() ? PRE_FORCE : 0) | POST_FORCE | MIN_POST_FORCE;
-}
-
 void FixWallLubricationRegion::init()
 {
   region = domain->get_region_by_id(region_id);
@@ -129,68 +119,14 @@ void FixWallLubricationRegion::init()
   const std::string kind = region->style;
   shape = kind == "sphere" ? Shape::sphere : kind == "cylinder" ? Shape::cylinder : Shape::flat;
 
-  lub::settle_contact_time(coeffs, update->dt);
-  const lub::SetupCheck check = lub::check_setup(coeffs, lub::Partner::wall, update->dt);
-  if (!check.error.empty()) error->all(FLERR, "{}: {}", STYLE, check.error);
-  if (comm->me == 0) {
-    utils::logmesg(lmp, "{}: region {} ({}), {}\n", STYLE, region_id, kind, check.description);
-    if (!check.tangential.empty()) utils::logmesg(lmp, "{}: {}\n", STYLE, check.tangential);
-    for (const std::string &w : check.warnings)
-      error->warning(FLERR, "{}: {}", STYLE, w);
-  }
-  reset_dt();
-  midpoint = nullptr;
-  for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
-    midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
-  step_velocity = midpoint ? nullptr : dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
-  pair = dynamic_cast<PairLubricatedSpringDashpot *>(force->pair_match("lubricated/springdashpot", 1));
-  contact_mass.init(STYLE, !pair);
+  init_model(STYLE, "region " + region_id + " (" + kind + "), ");
   const std::string problem = lub::validate_grid_for_radius(coeffs, smallest_sphere_radius(lmp, STYLE, groupbit));
   if (!problem.empty()) error->all(FLERR, "{}: {}", STYLE, problem);
-  films_pending = false;
 }
 
 void FixWallLubricationRegion::reset_dt()
 {
   model = lub::make_contact_model(coeffs, lub::Partner::wall, update->dt, &model);
-}
-
-// As fix wall/lubrication: a wet wall is computed before the pair style and its films applied
-// after it, within the atoms' film budget; a dry wall is computed after the pair style.
-void FixWallLubricationRegion::setup_pre_force(int /*vflag*/)
-{
-  if (update->whichflag == 1 && model.normal.lubrication.active()) compute_walls(true);
-}
-
-void FixWallLubricationRegion::pre_force(int /*vflag*/)
-{
-  if (model.normal.lubrication.active()) compute_walls(true);
-}
-
-void FixWallLubricationRegion::setup(int /*vflag*/)
-{
-  if (model.normal.lubrication.active())
-    apply_films();
-  else
-    compute_walls(false);
-}
-
-void FixWallLubricationRegion::post_force(int /*vflag*/)
-{
-  if (model.normal.lubrication.active())
-    apply_films();
-  else
-    compute_walls(false);
-}
-
-void FixWallLubricationRegion::min_setup(int /*vflag*/)
-{
-  compute_walls(false);
-}
-
-void FixWallLubricationRegion::min_post_force(int /*vflag*/)
-{
-  compute_walls(false);
 }
 
 // The region's displacement and angle at this step (Region::prematch evaluates its variables),
@@ -389,13 +325,6 @@ void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, 
   }
 }
 
-void FixWallLubricationRegion::add_film_loads(double *load, int nlocal) const
-{
-  if (!films_pending) return;
-  for (int i = 0; i < nlocal; i++)
-    load[i] += film_load[i];
-}
-
 // Every atom of the group counts as near each face it may touch at once (tmax), with the bound
 // of the largest film radius allowed.
 void FixWallLubricationRegion::add_film_share_bounds(double *bound, int nlocal) const
@@ -411,30 +340,10 @@ void FixWallLubricationRegion::add_film_share_bounds(double *bound, int nlocal) 
                                                               rmass[i], update->dt));
 }
 
-void FixWallLubricationRegion::apply_films()
+// A deferred wall film, scaled, in the outputs: the force and torque on the group.
+void FixWallLubricationRegion::tally_film(int i, const lub::Vec3 &force, const lub::Vec3 &moment)
 {
-  if (!films_pending) return;
-  films_pending = false;
-  double **f = atom->f, **torque = atom->torque, **x = atom->x;
-  const int nlocal = atom->nlocal;
-  const bool by_pair = pair && pair->keeps_film_budget();
-  const bool own = !pair;
-  const double *shear = shear_pending ? shear_film.data() : nullptr;
-  for (int i = 0; i < nlocal; i++) {
-    const double *ff = &film_force[3 * i];
-    const double *fs = shear ? shear + 6 * i : nullptr;
-    const bool film = ff[0] != 0.0 || ff[1] != 0.0 || ff[2] != 0.0;
-    if (!film && !(fs && (fs[0] != 0.0 || fs[1] != 0.0 || fs[2] != 0.0))) continue;
-    const double scale = by_pair ? pair->film_scale(i) : own ? lub::film_scale_of_load(film_load[i]) : 1.0;
-    lub::Vec3 force = lub::scaled({ff[0], ff[1], ff[2]}, scale), moment;
-    if (fs) {
-      force = lub::plus(force, lub::scaled({fs[0], fs[1], fs[2]}, scale));
-      moment = lub::scaled({fs[3], fs[4], fs[5]}, scale);
-      torque[i][0] += moment.x, torque[i][1] += moment.y, torque[i][2] += moment.z;
-    }
-    f[i][0] += force.x, f[i][1] += force.y, f[i][2] += force.z;
-    add_to_sums(x[i], force, moment);
-  }
+  add_to_sums(atom->x[i], force, moment);
 }
 
 double FixWallLubricationRegion::compute_scalar()

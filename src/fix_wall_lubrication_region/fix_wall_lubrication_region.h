@@ -9,10 +9,7 @@
 #ifndef LMP_FIX_WALL_LUBRICATION_REGION_H
 #define LMP_FIX_WALL_LUBRICATION_REGION_H
 
-#include "fix.h"
-
-#include "contact_mass/contact_mass.h"
-#include "lubricated/contact.h"
+#include "fix_lubricated_wall/fix_lubricated_wall.h"
 #include "lubricated/wall_motion.h"
 
 #include <string>
@@ -20,20 +17,12 @@
 
 namespace LAMMPS_NS {
 
-class FixWallLubricationRegion : public Fix {
+class FixWallLubricationRegion : public FixLubricatedWall {
  public:
   FixWallLubricationRegion(class LAMMPS *, int, char **);
   ~FixWallLubricationRegion() override;
 
-  void post_constructor() override;
-  int setmask() override;
   void init() override;
-  void setup_pre_force(int) override;
-  void setup(int) override;
-  void min_setup(int) override;
-  void pre_force(int) override;
-  void post_force(int) override;
-  void min_post_force(int) override;
   void reset_dt() override;
   double compute_scalar() override;
   double compute_vector(int) override;
@@ -53,11 +42,7 @@ class FixWallLubricationRegion : public Fix {
   void write_restart(FILE *) override;
   void restart(char *) override;
 
-  bool wet() const { return coeffs.wet(); }
-  // The many-body film budget, as fix wall/lubrication (pair_style lubricated/springdashpot
-  // sums these with its own loads).
-  void add_film_loads(double *load, int nlocal) const;
-  void add_film_share_bounds(double *bound, int nlocal) const;
+  void add_film_share_bounds(double *bound, int nlocal) const override;
 
   // Largest film radius against a concave surface, in sphere radii: R_f <= 4 R keeps the
   // search cutoff and the budget's bounds finite (a sphere region of radius >= 4/3 R, a
@@ -65,8 +50,6 @@ class FixWallLubricationRegion : public Fix {
   static constexpr double MAX_FILM_RATIO = 4.0;
 
  protected:
-  lubricated::Coefficients coeffs;
-  lubricated::ContactModel model;    // derived from coeffs and dt
   std::string region_id;
   class Region *region = nullptr;
   enum class Shape { flat, sphere, cylinder } shape = Shape::flat;    // how contact radii read
@@ -94,21 +77,11 @@ class FixWallLubricationRegion : public Fix {
   bool sums_reduced = false;
   void add_to_sums(const double *x, const lubricated::Vec3 &force, const lubricated::Vec3 &torque);
 
-  class FixNVESphereMidpoint *midpoint = nullptr;
-  class FixStepVelocity *step_velocity = nullptr;
-  class PairLubricatedSpringDashpot *pair = nullptr;
-  // Deferred films (a run: computed in pre_force, applied in post_force within the budget):
-  // per owned atom the normal films' force x y z, their summed share, and with the shear film
-  // its force x y z and torque x y z.
-  std::vector<double> film_force, film_load, shear_film;
-  bool films_pending = false, shear_pending = false;
-  ContactMass contact_mass;
-  std::vector<double> inverse_mass;
-  void compute_walls(bool defer_films);
+  void compute_walls(bool defer_films) override;
+  void tally_film(int i, const lubricated::Vec3 &force, const lubricated::Vec3 &moment) override;
   void contacts_of_atom(int i, double mass, double **v, double **omega, bool defer_films, double kick_time,
                         lubricated::Evaluation when);
   lubricated::FilmRadius film_radius(double sphere_radius, double contact_radius) const;
-  void apply_films();
 };
 
 }    // namespace LAMMPS_NS

@@ -10,8 +10,7 @@
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_step_velocity/fix_step_velocity.h"
-#include "fix_wall_lubrication/fix_wall_lubrication.h"
-#include "fix_wall_lubrication_region/fix_wall_lubrication_region.h"
+#include "fix_lubricated_wall/fix_lubricated_wall.h"
 #include "lubricated/check_setup.h"
 #include "lubricated/contact_network.h"
 #include "lubricated/contact_network_message.h"
@@ -236,17 +235,10 @@ void PairLubricatedSpringDashpot::init_style()
   // The many-body film budget covers the films of these pairs and of the wet walls.
   walls.clear();
   bool wet_walls = false;
-  for (auto &ifix : modify->get_fix_by_style("^wall/lubrication$")) {
-    auto wall = dynamic_cast<FixWallLubrication *>(ifix);
+  for (Fix *ifix : modify->get_fix_list()) {    // fix wall/lubrication and wall/lubrication/region
+    auto wall = dynamic_cast<FixLubricatedWall *>(ifix);
     if (!wall) continue;
     walls.push_back(wall);
-    wet_walls = wet_walls || wall->wet();
-  }
-  region_walls.clear();
-  for (auto &ifix : modify->get_fix_by_style("^wall/lubrication/region$")) {
-    auto wall = dynamic_cast<FixWallLubricationRegion *>(ifix);
-    if (!wall) continue;
-    region_walls.push_back(wall);
     wet_walls = wet_walls || wall->wet();
   }
   film_budget = limit_per_atom && (any_wet || wet_walls);

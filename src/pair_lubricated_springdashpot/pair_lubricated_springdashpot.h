@@ -79,9 +79,7 @@ class PairLubricatedSpringDashpot : public Pair {
   // and its film force (along n), applied in full by the loops and scaled down afterwards.
   bool limit_per_atom = true;
   bool film_budget = false;
-  std::vector<class FixWallLubrication *> walls;    // their films share the atoms' budget
-  // and those of fix wall/lubrication/region
-  std::vector<class FixWallLubricationRegion *> region_walls;
+  std::vector<class FixLubricatedWall *> walls;    // the wall fixes: their films share the atoms' budget
   std::vector<double> load_of_atom, scale_of_atom;
   std::vector<int> record_i, record_j;
   std::vector<double> record_force;

@@ -9,8 +9,7 @@
 
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
-#include "fix_wall_lubrication/fix_wall_lubrication.h"
-#include "fix_wall_lubrication_region/fix_wall_lubrication_region.h"
+#include "fix_lubricated_wall/fix_lubricated_wall.h"
 #include "lubricated/contact_network.h"
 #include "lubricated/contact_network_message.h"
 #include "lubricated/contact_network_ranks.h"
@@ -78,8 +77,6 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
   }
   for (auto wall : walls)
     wall->add_film_share_bounds(bound, nlocal);
-  for (auto wall : region_walls)
-    wall->add_film_share_bounds(bound, nlocal);
   if (newton_pair) {
     comm_what = COMM_LOAD;
     comm->reverse_comm(this);
@@ -110,8 +107,6 @@ void PairLubricatedSpringDashpot::begin_film_budget()
   }
   std::fill(load_of_atom.begin(), load_of_atom.begin() + nall, 0.0);
   for (auto wall : walls)
-    wall->add_film_loads(load_of_atom.data(), nlocal);
-  for (auto wall : region_walls)
     wall->add_film_loads(load_of_atom.data(), nlocal);
   nrecord = 0;
 }

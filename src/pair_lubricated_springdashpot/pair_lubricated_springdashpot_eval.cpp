@@ -9,7 +9,6 @@
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_step_velocity/fix_step_velocity.h"
-#include "fix_wall_lubrication/fix_wall_lubrication.h"
 #include "lubricated/contact_network.h"
 #include "lubricated/contact_network_message.h"
 #include "lubricated/contact_network_ranks.h"

@@ -1,0 +1,126 @@
+/* ----------------------------------------------------------------------
+   The wall fixes' shared part (fix_lubricated_wall.h)
+------------------------------------------------------------------------- */
+
+#include "fix_lubricated_wall.h"
+
+#include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
+#include "fix_step_velocity/fix_step_velocity.h"
+#include "lubricated/check_setup.h"
+#include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "modify.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+namespace lub = lubricated;
+
+// The shared fix that lets a run's set-up continue the last run (created here, after this fix
+// is in place, when no pair style made it).
+void FixLubricatedWall::post_constructor()
+{
+  FixStepVelocity::find_or_create(lmp);
+}
+
+int FixLubricatedWall::setmask()
+{
+  return (coeffs.wet() ? PRE_FORCE : 0) | POST_FORCE | MIN_POST_FORCE;
+}
+
+void FixLubricatedWall::init_model(const char *style, const std::string &what)
+{
+  lub::settle_contact_time(coeffs, update->dt);
+  const lub::SetupCheck check = lub::check_setup(coeffs, lub::Partner::wall, update->dt);
+  if (!check.error.empty()) error->all(FLERR, "{}: {}", style, check.error);
+  if (comm->me == 0) {
+    utils::logmesg(lmp, "{}: {}{}\n", style, what, check.description);
+    if (!check.tangential.empty()) utils::logmesg(lmp, "{}: {}\n", style, check.tangential);
+    for (const std::string &w : check.warnings)
+      error->warning(FLERR, "{}: {}", style, w);
+  }
+  reset_dt();
+  // Under fix nve/sphere/midpoint the step-exact integration uses the velocity over the last
+  // step, which that fix provides (see pair_style lubricated/springdashpot).
+  midpoint = nullptr;
+  for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
+    midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
+  step_velocity = midpoint ? nullptr : dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
+  pair = dynamic_cast<PairLubricatedSpringDashpot *>(force->pair_match("lubricated/springdashpot", 1));
+  contact_mass.init(style, !pair);    // the pair style logs them where there is one
+  films_pending = false;
+}
+
+void FixLubricatedWall::setup_pre_force(int /*vflag*/)
+{
+  if (update->whichflag == 1 && model.normal.lubrication.active()) compute_walls(true);
+}
+
+void FixLubricatedWall::pre_force(int /*vflag*/)
+{
+  if (model.normal.lubrication.active()) compute_walls(true);
+}
+
+void FixLubricatedWall::setup(int /*vflag*/)
+{
+  if (model.normal.lubrication.active())
+    apply_films();
+  else
+    compute_walls(false);
+}
+
+void FixLubricatedWall::post_force(int /*vflag*/)
+{
+  if (model.normal.lubrication.active())
+    apply_films();
+  else
+    compute_walls(false);
+}
+
+// Minimisation: the walls in one go, films as each contact's own cap leaves them.
+void FixLubricatedWall::min_setup(int /*vflag*/)
+{
+  compute_walls(false);
+}
+
+void FixLubricatedWall::min_post_force(int /*vflag*/)
+{
+  compute_walls(false);
+}
+
+void FixLubricatedWall::add_film_loads(double *load, int nlocal) const
+{
+  if (!films_pending) return;
+  for (int i = 0; i < nlocal; i++)
+    load[i] += film_load[i];
+}
+
+void FixLubricatedWall::apply_films()
+{
+  if (!films_pending) return;
+  films_pending = false;
+  double **f = atom->f, **torque = atom->torque;
+  const int nlocal = atom->nlocal;
+  const bool by_pair = pair && pair->keeps_film_budget();
+  const bool own = !pair;
+  const double *shear = shear_pending ? shear_film.data() : nullptr;
+  for (int i = 0; i < nlocal; i++) {
+    const double *ff = &film_force[3 * i];
+    const double *fs = shear ? shear + 6 * i : nullptr;
+    const bool film = ff[0] != 0.0 || ff[1] != 0.0 || ff[2] != 0.0;
+    if (!film && !(fs && (fs[0] != 0.0 || fs[1] != 0.0 || fs[2] != 0.0))) continue;
+    const double scale = by_pair ? pair->film_scale(i) : own ? lub::film_scale_of_load(film_load[i]) : 1.0;
+    lub::Vec3 force = lub::scaled({ff[0], ff[1], ff[2]}, scale), moment;
+    if (fs) {
+      force = lub::plus(force, lub::scaled({fs[0], fs[1], fs[2]}, scale));
+      moment = lub::scaled({fs[3], fs[4], fs[5]}, scale);
+      torque[i][0] += moment.x, torque[i][1] += moment.y, torque[i][2] += moment.z;
+    }
+    f[i][0] += force.x, f[i][1] += force.y, f[i][2] += force.z;
+    tally_film(i, force, moment);
+  }
+}

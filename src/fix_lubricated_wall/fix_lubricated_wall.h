@@ -1,0 +1,71 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   What the two wall fixes of the plugin share (fix wall/lubrication, fix
+   wall/lubrication/region): the coefficients and the contact model, the run's order of work,
+   the check and description at init, and the wall films' part in the many-body film budget.
+   A wet wall is computed before the pair style (pre_force) and its films applied after it
+   (post_force), scaled by the atoms' budget; a dry wall is computed after the pair style. Each
+   fix computes its own walls (compute_walls) and bounds their film shares.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_FIX_LUBRICATED_WALL_H
+#define LMP_FIX_LUBRICATED_WALL_H
+
+#include "fix.h"
+
+#include "contact_mass/contact_mass.h"
+#include "lubricated/contact.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixLubricatedWall : public Fix {
+ public:
+  FixLubricatedWall(class LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), contact_mass(lmp) {}
+
+  void post_constructor() override;
+  int setmask() override;
+  void setup_pre_force(int) override;
+  void setup(int) override;
+  void min_setup(int) override;
+  void pre_force(int) override;
+  void post_force(int) override;
+  void min_post_force(int) override;
+
+  bool wet() const { return coeffs.wet(); }
+  // Adds this step's wall-film shares to the owned atoms' loads of the many-body film budget
+  // (lubricated/film_budget.h; pair_style lubricated/springdashpot sums them with its own).
+  void add_film_loads(double *load, int nlocal) const;
+  // Adds to each owned atom the bound on its wet walls' film shares (film_budget.h).
+  virtual void add_film_share_bounds(double *bound, int nlocal) const = 0;
+
+ protected:
+  lubricated::Coefficients coeffs;
+  lubricated::ContactModel model;                    // derived from coeffs and dt
+  class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
+  class FixStepVelocity *step_velocity = nullptr;    // the last step's velocities for a set-up
+  class PairLubricatedSpringDashpot *pair = nullptr;
+  // Deferred films (a run): per owned atom the normal films' force x y z and their summed share,
+  // and with the shear film its force x y z and torque x y z, scaled with the normal films (one
+  // contact's share: the larger of the two films'); valid while films_pending.
+  std::vector<double> film_force, film_load, shear_film;
+  bool films_pending = false, shear_pending = false;
+  // Immovable atoms (skipped: the wall cannot move them) and rigid bodies (m_e = M_body).
+  ContactMass contact_mass;
+  std::vector<double> inverse_mass;
+
+  // At init: t_c settled, the set-up checked and described (`what` names the walls), the
+  // integrator, the step-velocity fix, the pair style and the contact masses found.
+  void init_model(const char *style, const std::string &what);
+  virtual void compute_walls(bool defer_films) = 0;
+  // The deferred films, scaled by the atoms' film budget: the pair style's where it keeps one
+  // (its loads include these walls), this fix's own without a lubricated pair style, none
+  // under `limit pair`; tally() adds each atom's scaled film force and moment to the outputs.
+  void apply_films();
+  virtual void tally_film(int i, const lubricated::Vec3 &force, const lubricated::Vec3 &moment) = 0;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
