@@ -16,6 +16,8 @@
 #include "modify.h"
 #include "update.h"
 
+#include <mpi.h>
+
 using namespace LAMMPS_NS;
 using namespace FixConst;
 namespace lub = lubricated;
@@ -90,6 +92,28 @@ void FixLubricatedWall::min_setup(int /*vflag*/)
 void FixLubricatedWall::min_post_force(int /*vflag*/)
 {
   compute_walls(false);
+}
+
+void FixLubricatedWall::clear_sums()
+{
+  for (double &s : local_sums)
+    s = 0.0;
+  sums_reduced = false;
+}
+
+double FixLubricatedWall::compute_scalar()
+{
+  if (!sums_reduced) {
+    MPI_Allreduce(local_sums, global_sums, 1 + size_vector, MPI_DOUBLE, MPI_SUM, world);
+    sums_reduced = true;
+  }
+  return global_sums[0];
+}
+
+double FixLubricatedWall::compute_vector(int n)
+{
+  compute_scalar();
+  return global_sums[1 + n];
 }
 
 void FixLubricatedWall::add_film_loads(double *load, int nlocal) const

@@ -32,6 +32,10 @@ class FixLubricatedWall : public Fix {
   void pre_force(int) override;
   void post_force(int) override;
   void min_post_force(int) override;
+  // The outputs: the walls' spring energy (scalar) and the size_vector sums the fix defines
+  // (force of the walls on the group, and the region's torque), summed over the ranks once.
+  double compute_scalar() override;
+  double compute_vector(int) override;
 
   bool wet() const { return coeffs.wet(); }
   // Adds this step's wall-film shares to the owned atoms' loads of the many-body film budget
@@ -54,6 +58,11 @@ class FixLubricatedWall : public Fix {
   // Immovable atoms (skipped: the wall cannot move them) and rigid bodies (m_e = M_body).
   ContactMass contact_mass;
   std::vector<double> inverse_mass;
+  // energy, then the vector's sums (at most 6), this rank's and all ranks'
+  static constexpr int MAX_SUMS = 7;
+  double local_sums[MAX_SUMS] = {}, global_sums[MAX_SUMS] = {};
+  bool sums_reduced = false;
+  void clear_sums();
 
   // At init: t_c settled, the set-up checked and described (`what` names the walls), the
   // integrator, the step-velocity fix, the pair style and the contact masses found.

@@ -157,9 +157,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
       continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
   const bool tangential_on = model.tangential.active();
 
-  for (double &s : local_sums)
-    s = 0.0;
-  sums_reduced = false;
+  clear_sums();
   films_pending = defer_films = defer_films && model.normal.lubrication.active();
   shear_pending = defer_films && model.tangential.film_active();
   if (defer_films) {
@@ -191,10 +189,13 @@ void FixWallLubrication::compute_walls(bool defer_films)
     lub::HistorySlot slot;
     if (tangential_on) {
       // The sphere's motion relative to the wall frame gives the slip at the contact point.
-      const lub::Vec3 v_frame = lub::frame_velocity(w, motion, wall_velocity, shift, x[i]);
+      const lub::RelativeMotion rel =
+          lub::relative_to_wall(lub::rigid_motion(w, motion, wall_velocity, shift), {v[i][0], v[i][1], v[i][2]},
+                                {omega[i][0], omega[i][1], omega[i][2]}, r, at.n,
+                                {x[i][0] - r * at.n.x, x[i][1] - r * at.n.y, x[i][2] - r * at.n.z});
       p.n = at.n;
-      p.dv = {v[i][0] - v_frame.x, v[i][1] - v_frame.y, v[i][2] - v_frame.z};
-      p.omega_i = {omega[i][0], omega[i][1], omega[i][2] - lub::wall_spin(w, motion)};
+      p.dv = rel.dv;
+      p.omega_i = rel.omega;
       p.radius_i = r, p.reduced_radius = film_radius;    // R_f: the shear film's and rolling radius
       p.mass_i = rmass[i];                               // the sphere's own inertia, also in a rigid body
       if (h) slot = {h, h[3] != 0.0, !update->setupflag};
@@ -270,19 +271,4 @@ void FixWallLubrication::compute_walls(bool defer_films)
   for (int i = 0; i < nlocal; i++)
     if ((mask[i] & groupbit) && inverse_mass[i] > 0.0) walls_of_atom(i, 1.0 / inverse_mass[i]);
   warn_behind();
-}
-
-double FixWallLubrication::compute_scalar()
-{
-  if (!sums_reduced) {
-    MPI_Allreduce(local_sums, global_sums, 4, MPI_DOUBLE, MPI_SUM, world);
-    sums_reduced = true;
-  }
-  return global_sums[0];
-}
-
-double FixWallLubrication::compute_vector(int n)
-{
-  compute_scalar();
-  return global_sums[1 + n];
 }

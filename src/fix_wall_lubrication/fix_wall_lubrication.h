@@ -23,8 +23,6 @@ class FixWallLubrication : public FixLubricatedWall {
 
   void init() override;
   void reset_dt() override;
-  double compute_scalar() override;
-  double compute_vector(int) override;
   // The wall motion's time origin (global restart), so that a restarted run moves on.
   void write_restart(FILE *) override;
   void restart(char *) override;
@@ -61,9 +59,6 @@ class FixWallLubrication : public FixLubricatedWall {
   void parse_walls(int narg, char **arg, int iwall);
   void parse_motion(int narg, char **arg, int iarg);
   void check_sphere_sizes();
-  double local_sums[4] = {0.0, 0.0, 0.0, 0.0};    // energy, force on the group x y z
-  double global_sums[4] = {0.0, 0.0, 0.0, 0.0};
-  bool sums_reduced = false;
   void compute_walls(bool defer_films) override;
   void tally_film(int i, const lubricated::Vec3 &force, const lubricated::Vec3 &moment) override;
   void warn_behind();

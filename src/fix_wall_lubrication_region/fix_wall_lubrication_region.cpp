@@ -198,9 +198,7 @@ void FixWallLubricationRegion::compute_walls(bool defer_films)
   const lub::Evaluation when =
       continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
 
-  for (double &s : local_sums)
-    s = 0.0;
-  sums_reduced = false;
+  clear_sums();
   films_pending = defer_films = defer_films && model.normal.lubrication.active();
   shear_pending = defer_films && model.tangential.film_active();
   if (defer_films) {
@@ -344,19 +342,4 @@ void FixWallLubricationRegion::add_film_share_bounds(double *bound, int nlocal) 
 void FixWallLubricationRegion::tally_film(int i, const lub::Vec3 &force, const lub::Vec3 &moment)
 {
   add_to_sums(atom->x[i], force, moment);
-}
-
-double FixWallLubricationRegion::compute_scalar()
-{
-  if (!sums_reduced) {
-    MPI_Allreduce(local_sums, global_sums, 7, MPI_DOUBLE, MPI_SUM, world);
-    sums_reduced = true;
-  }
-  return global_sums[0];
-}
-
-double FixWallLubricationRegion::compute_vector(int n)
-{
-  compute_scalar();
-  return global_sums[1 + n];
 }

@@ -24,8 +24,6 @@ class FixWallLubricationRegion : public FixLubricatedWall {
 
   void init() override;
   void reset_dt() override;
-  double compute_scalar() override;
-  double compute_vector(int) override;
 
   // Per-atom friction history per region face (fix_wall_lubrication_region_history.cpp).
   void grow_arrays(int) override;
@@ -72,9 +70,6 @@ class FixWallLubricationRegion : public FixLubricatedWall {
   void release_other_slots(int i, const int *near, int n);
 
   // energy, force of the wall on the group x y z, its torque about the reference point x y z
-  double local_sums[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  double global_sums[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  bool sums_reduced = false;
   void add_to_sums(const double *x, const lubricated::Vec3 &force, const lubricated::Vec3 &torque);
 
   void compute_walls(bool defer_films) override;

@@ -14,6 +14,7 @@
 
 #include "tangential.h"    // Vec3
 #include "wall_curvature.h"
+#include "wall_motion.h"    // RigidWallMotion, relative_to_wall
 
 #include <cmath>
 
@@ -131,21 +132,29 @@ inline double wall_spin(const WallSurface &w, const WallMotion &m)
   return w.cylinder && (m.shear_dim == 0 || m.shear_dim == 1) ? -m.shear_speed / w.radius : 0.0;
 }
 
-// Velocity of the wall frame at the point x: the translation's (and wiggle's) velocity V, the
-// shear of a plane or along a cylinder's axis, and a turning cylinder's Omega x (x - centre).
+// The wall frame as a rigid motion (wall_motion.h, shared with the region wall): the
+// translation's (and wiggle's) velocity V plus the shear of a plane or along a cylinder's axis,
+// and a turning cylinder's spin Omega about its displaced axis.
+inline RigidWallMotion rigid_motion(const WallSurface &w, const WallMotion &m, const Vec3 &translation_velocity,
+                                    const Vec3 &shift)
+{
+  RigidWallMotion frame;
+  frame.velocity = translation_velocity;
+  frame.point = shift;
+  if (m.shear_dim < 0) return frame;
+  const double spin = wall_spin(w, m);
+  if (spin != 0.0)
+    frame.spin = {0.0, 0.0, spin};
+  else
+    WallMotion::component(frame.velocity, m.shear_dim) += m.shear_speed;
+  return frame;
+}
+
+// Velocity of the wall frame at the point x.
 inline Vec3 frame_velocity(const WallSurface &w, const WallMotion &m, const Vec3 &translation_velocity,
                            const Vec3 &shift, const double *x)
 {
-  Vec3 v = translation_velocity;
-  if (m.shear_dim < 0) return v;
-  const double spin = wall_spin(w, m);
-  if (spin != 0.0) {
-    v.x -= spin * (x[1] - shift.y);
-    v.y += spin * (x[0] - shift.x);
-  } else {
-    WallMotion::component(v, m.shear_dim) += m.shear_speed;
-  }
-  return v;
+  return rigid_motion(w, m, translation_velocity, shift).velocity_at({x[0], x[1], x[2]});
 }
 
 }    // namespace lubricated
