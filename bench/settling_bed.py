@@ -49,7 +49,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tools"))
 sys.path.insert(0, str(ROOT / "bench"))
 import lammps_run  # noqa: E402
-from bench_common import hooke_coefficients, lammps_version, parse_log, physics_flags  # noqa: E402,F401
+from bench_common import SETTINGS, hooke_coefficients, lammps_version, parse_log, physics_flags  # noqa: E402,F401
 
 R = 1.0e-3           # sphere radius [m]
 RHO = 2500.0         # sphere density [kg/m^3]
@@ -76,13 +76,6 @@ atom_style sphere
 boundary p p f
 comm_modify vel yes
 newton on
-"""
-
-SETTINGS = """fix nve all nve/sphere
-fix weight all gravity {g} vector 0 0 -1
-neighbor {skin} bin
-neigh_modify delay 0 every 1 check yes
-timestep {dt}
 """
 
 # Evaluated after the timed run, in a 'run 0' of its own, so that nothing of it is timed.
