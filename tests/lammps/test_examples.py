@@ -25,22 +25,34 @@ def first_rebound(lmp, **variables):
 
 def test_settling_sphere_rebounds_near_legendre(lmp):
     """Validation case (b) in DEM (activation dem): a steel sphere settling in silicone oil at
-    St = 32.5 rebounds with e = 0.43, against e_d exp(-35/St) = 0.33 (make settling-sphere). The
-    band, 0.15 in e, is the scatter of the experiments around the law near St = 30 (Joseph et al.
-    2001, Gondret et al. 2002; doc/model.rst, "DEM without a resolved fluid"). The time step is
-    t_c / 8, computed in the input: no N_c < 8 warning (issue 21)."""
+    St = 32.5 rebounds with e = 0.350 (the largest upward speed out of contact), against
+    e_d exp(-35/St) = 0.331 (make settling-sphere). The band, 0.05 in e, is the paper's film's
+    own distance from the law: with a fixed activation its impulse gives e/e_d ~ 1 - A/St, whose
+    closest approach to exp(-35/St) over 20 <= St <= 1000 still deviates by 0.040
+    (doc/pair_lubricated_springdashpot.rst, "Wet restitution"), times e_d = 0.97, plus the
+    trajectory's sampling (2 steps). The time step is t_c / 8, computed in the input: no N_c < 8
+    warning (issue 21)."""
     result, e, height = first_rebound(lmp, settle=0.03)
     assert 25.0 < result["St"] < 40.0
-    assert e == pytest.approx(result["legendre_law"], abs=0.15)
+    assert e == pytest.approx(result["legendre_law"], abs=0.05)
     assert 0.0 < height < 1.0
     assert "WARNING" not in lmp.log and "(8 steps)" in lmp.log
     assert "activation dem: eps_al = 2.75" in lmp.log
 
 
+@pytest.mark.parametrize("mu, st_range", [("0.1", (10.0, 13.0)), ("0.02", (90.0, 120.0)), ("0.01", (220.0, 280.0))])
+def test_settling_sphere_follows_legendre_over_stokes(lmp, mu, st_range):
+    """The same sphere in thicker and thinner oils (St 11, 105, 252): e within the same 0.05 of
+    e_d exp(-35/St) (measured 0.005 / 0.043, 0.720 / 0.695, 0.859 / 0.844)."""
+    result, e, _ = first_rebound(lmp, mu=mu, settle=0.03)
+    assert st_range[0] < result["St"] < st_range[1]
+    assert e == pytest.approx(result["legendre_law"], abs=0.05)
+
+
 def test_settling_sphere_given_activation_misses_the_wall(lmp):
     """The old recipe, activation 0.09375 given directly, misses the wall's resistance above
     0.094 R and 11 Stokes drags below (doc/model.rst, "DEM without a resolved fluid"): the sphere
-    rebounds faster (e = 0.505 against 0.432) and more than twice as high."""
+    rebounds faster (e = 0.408 against 0.350) and more than twice as high."""
     _, e_dem, height_dem = first_rebound(lmp, settle=0.03)
     _, e_given, height_given = first_rebound(lmp, film="0.09375", settle=0.03)
     assert e_given > e_dem + 0.05
