@@ -38,6 +38,10 @@ FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
 
   parse(narg, arg);
   if (domain->triclinic) error->all(FLERR, "{} does not support triclinic boxes", STYLE);
+  for (const auto &w : added_mass_walls)
+    if (domain->periodicity[w.axis])
+      error->all(FLERR, "{}: wall {}plane in a periodic dimension (the box must be non-periodic in {})", STYLE,
+                 "xyz"[w.axis], "xyz"[w.axis]);
 
   vector_flag = 1;    // total fluid force on the group (3), mean solid fraction of occupied bins
   size_vector = 4;
@@ -292,7 +296,18 @@ void FixFluidDrag::post_force(int /*vflag*/)
         history ? basset.known_force(history_state[i],
                                      lub::basset_coefficient(diameter, model.density, model.viscosity), dt, known)
                 : 0.0;
-    const double m_eff = rmass[i] + m_a + m_h;
+    // Near walls the added mass grows, per axis, and its change brings forces of its own
+    // (wall_added_mass.h), with the velocity relative to the fluid, -slip.
+    double axis_mass[3] = {m_a, m_a, m_a}, wall_force[3] = {0.0, 0.0, 0.0};
+    if (!added_mass_walls.empty()) {
+      const lub::WallAddedMass near =
+          lub::wall_added_mass(added_mass_walls.data(), static_cast<int>(added_mass_walls.size()), radius[i], x[i]);
+      const double relative[3] = {-slip[0], -slip[1], -slip[2]};
+      lub::wall_added_mass_force(near, m_a, relative, wall_force);
+      for (int d = 0; d < 3; d++)
+        axis_mass[d] = m_a * near.mass[d];
+    }
+    const double m_eff = rmass[i] + std::min(axis_mass[0], std::min(axis_mass[1], axis_mass[2])) + m_h;
     beta = std::min(beta, m_eff / dt);    // the cap above, for the mass that the drag accelerates
     if (magnus || saffman) {
       double curl[3], part[3];
@@ -313,13 +328,14 @@ void FixFluidDrag::post_force(int /*vflag*/)
     const double undisturbed = pressure ? buoyant_volume : 0.0;
     double accel[3] = {0.0, 0.0, 0.0};
     for (int d = 0; d < 3; d++) {
-      const double fluid = beta * slip[d] - buoyant_volume * gravity[d] + undisturbed * fluid_accel[d] + lift[d];
+      const double fluid =
+          beta * slip[d] - buoyant_volume * gravity[d] + undisturbed * fluid_accel[d] + lift[d] + wall_force[d];
       if (!solves_acceleration()) {
         f[i][d] += fluid;
         totals[d] += fluid;
         continue;
       }
-      accel[d] = (f[i][d] + fluid + known[d] + (m_a + m_h) * fluid_accel[d]) / m_eff;
+      accel[d] = (f[i][d] + fluid + known[d] + (axis_mass[d] + m_h) * fluid_accel[d]) / (rmass[i] + axis_mass[d] + m_h);
       const double total = rmass[i] * accel[d];
       totals[d] += total - f[i][d];
       f[i][d] = total;

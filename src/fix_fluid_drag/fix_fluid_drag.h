@@ -14,6 +14,7 @@
 
 #include "lubricated/drag.h"
 #include "lubricated/fluid_inertia.h"
+#include "lubricated/wall_added_mass.h"
 
 #include <string>
 #include <vector>
@@ -64,11 +65,12 @@ class FixFluidDrag : public Fix {
   int every = 1;
 
   // fluid inertia and memory (all off by default)
-  double added_mass = 0.0;    // C_m
-  bool pressure = false;      // rho_f V Du_f/Dt
-  bool history = false;       // Basset-Boussinesq
-  bool magnus = false;        // Rubinow-Keller lift
-  bool saffman = false;       // Saffman-Mei shear lift
+  double added_mass = 0.0;                                    // C_m
+  std::vector<lubricated::AddedMassWall> added_mass_walls;    // its near-wall increase
+  bool pressure = false;                                      // rho_f V Du_f/Dt
+  bool history = false;                                       // Basset-Boussinesq
+  bool magnus = false;                                        // Rubinow-Keller lift
+  bool saffman = false;                                       // Saffman-Mei shear lift
   int history_window = 10, history_modes = 20;
   lubricated::BassetHistory basset;
   double **history_state = nullptr;

@@ -5,7 +5,7 @@
      density rho_f | law stokes|schiller-naumann | hindrance none|richardson-zaki n|di-felice
      velocity ux uy uz (numbers or v_name) | superficial yes|no | buoyancy gx gy gz
      bins nx ny nz | every N
-     added_mass C_m | pressure yes|no | acceleration ax ay az (numbers or v_name)
+     added_mass C_m | wall xplane|yplane|zplane lo hi (NULL or a number) | pressure yes|no | acceleration ax ay az (numbers or v_name)
      history yes|no | window N_w | tail M | magnus yes|no | vorticity wx wy wz | saffman yes|no
 ------------------------------------------------------------------------- */
 
@@ -116,6 +116,21 @@ void FixFluidDrag::parse(int narg, char **arg)
         error->all(FLERR, "{}: added_mass C_m = {} is out of range (allowed: 0 <= C_m <= 10; 0.5 for a sphere)", STYLE,
                    arg[iarg + 1]);
       iarg += 2;
+    } else if (key == "wall") {
+      need(iarg, 3);
+      const std::string face = arg[iarg + 1];
+      const int axis = face == "xplane" ? 0 : face == "yplane" ? 1 : face == "zplane" ? 2 : -1;
+      if (axis < 0) error->all(FLERR, "{}: wall must be xplane, yplane or zplane, got '{}'", STYLE, face);
+      for (const auto &w : added_mass_walls)
+        if (w.axis == axis) error->all(FLERR, "{}: wall {} is given twice", STYLE, face);
+      bool any = false;
+      for (int side = 0; side < 2; side++) {
+        if (std::string(arg[iarg + 2 + side]) == "NULL") continue;
+        added_mass_walls.push_back({axis, number(iarg + 2 + side)});
+        any = true;
+      }
+      if (!any) error->all(FLERR, "{}: wall {} NULL NULL gives no wall", STYLE, face);
+      iarg += 4;
     } else if (key == "pressure") {
       need(iarg, 1);
       pressure = yes_no(iarg + 1);
@@ -151,7 +166,7 @@ void FixFluidDrag::parse(int narg, char **arg)
     } else {
       error->all(FLERR,
                  "{}: unknown keyword '{}' (expected viscosity, density, law, hindrance, velocity, "
-                 "superficial, buoyancy, bins, every, added_mass, pressure, acceleration, history, "
+                 "superficial, buoyancy, bins, every, added_mass, wall, pressure, acceleration, history, "
                  "window, tail, magnus, vorticity or saffman)",
                  STYLE, key);
     }
@@ -162,6 +177,8 @@ void FixFluidDrag::parse(int narg, char **arg)
   if (fluid_inertia() && model.density == 0.0)
     error->all(FLERR, "{}: added_mass, pressure, history, magnus and saffman need the fluid density (density keyword)",
                STYLE);
+  if (!added_mass_walls.empty() && !(added_mass > 0.0))
+    error->all(FLERR, "{}: wall (the added mass's near-wall increase) needs added_mass C_m > 0", STYLE);
   bool varying = false;
   for (const auto &c : velocity)
     varying = varying || !c.name.empty();
