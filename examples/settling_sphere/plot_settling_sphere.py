@@ -24,6 +24,9 @@ import lammps_run  # noqa: E402
 FILMS = ["dem", "0.09375", "1"]    # the DEM setting, then the old "give activation directly"
 # The DEM setting over St: the oil's viscosity [Pa s] (the example's is 0.048, St 32.5).
 SWEEP = ["0.1", "0.02", "0.01"]
+# The DEM setting with the fluid's inertia and memory (fix fluid/drag): added mass, its increase
+# near the wall, and the history force.
+INERTIA = "added_mass 0.5 history yes wall zplane 0.0 NULL"
 
 
 def first_rebound(t, gap, vz):
@@ -47,12 +50,16 @@ def first_rebound(t, gap, vz):
     return u_in, u_out, max(height, 0.0)
 
 
-def run(film, out, settle=0.4, ncontact=8, mu=None):
+def run(film, out, settle=0.4, ncontact=8, mu=None, inertia=None):
     script = (ROOT / "examples" / "settling_sphere" / "in.settling_sphere").read_text()
     csv = f"settling_sphere_{film}.csv" if mu is None else f"settling_sphere_{film}_mu{mu}.csv"
+    if inertia:
+        csv = f"settling_sphere_{film}_inertia.csv"
     variables = {"film": film, "csv": csv, "settle": settle, "ncontact": ncontact}
     if mu is not None:
         variables["mu"] = mu
+    if inertia:
+        variables["inertia"] = inertia
     result, _ = lammps_run.run(script, out / "runs", variables, name="in.settling_sphere")
     shutil.copy(out / "runs" / csv, out / csv)
     data = np.genfromtxt(out / csv, delimiter=",", names=True)
@@ -67,6 +74,7 @@ def main():
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     runs = {film: run(film, out) for film in FILMS}
+    runs["dem + inertia"] = run("dem", out, inertia=INERTIA)
     print(f"{'activation':>10} {'St':>6} {'u_in':>7} {'u_out':>7} {'e':>6} {'e_d exp(-35/St)':>16} "
           f"{'rebound [R]':>11}")
     for film, (result, _, u_in, u_out, height) in runs.items():
@@ -91,7 +99,8 @@ def main():
     bottom = fig.add_subplot(2, 2, 3, sharex=top)
     law_axes = fig.add_subplot(1, 2, 2)
     for film, (result, data, u_in, u_out, height) in runs.items():
-        label = "activation dem (DEM setting)" if film == "dem" else f"activation {film} (given directly)"
+        label = {"dem": "activation dem (DEM setting)",
+                 "dem + inertia": "activation dem, added mass + history"}.get(film, f"activation {film} (given directly)")
         t = data["t"] - data["t"][np.argmax(data["gap_over_R"] <= 0.0)]
         top.plot(t * 1e3, data["gap_over_R"], label=f"{label}: e = {u_out / u_in:.3f}")
         bottom.plot(t * 1e3, data["vz"], label=label)

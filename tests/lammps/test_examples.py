@@ -1,4 +1,5 @@
 """The example inputs run as documented (smoke tests with physics checks where cheap)."""
+import math
 import pathlib
 import sys
 
@@ -12,14 +13,16 @@ def example(name):
     return (ROOT / "examples" / name).read_text()
 
 
-def first_rebound(lmp, **variables):
-    """The settling sphere's first rebound (plot_settling_sphere.first_rebound) and St."""
+def first_rebound(lmp, terminal=True, **variables):
+    """The settling sphere's first rebound (plot_settling_sphere.first_rebound) and St (the
+    sphere at its terminal speed from 4 R on, unless terminal is False)."""
     sys.path.insert(0, str(ROOT / "examples" / "settling_sphere"))
     from plot_settling_sphere import first_rebound as measure
     result = lmp(example("settling_sphere/in.settling_sphere"), csv="trajectory.csv", **variables)
     data = np.genfromtxt(lmp.dir / "trajectory.csv", delimiter=",", names=True)
     u_in, u_out, height = measure(data["t"], data["gap_over_R"], data["vz"])
-    assert u_in == pytest.approx(result["U"], rel=1e-3)    # at its terminal speed from 4 R on
+    if terminal:
+        assert u_in == pytest.approx(result["U"], rel=1e-3)    # at its terminal speed from 4 R on
     return result, u_out / u_in, height
 
 
@@ -47,6 +50,26 @@ def test_settling_sphere_follows_legendre_over_stokes(lmp, mu, st_range):
     result, e, _ = first_rebound(lmp, mu=mu, settle=0.03)
     assert st_range[0] < result["St"] < st_range[1]
     assert e == pytest.approx(result["legendre_law"], abs=0.05)
+
+
+def u_in_over_u(lmp, result):
+    """The largest approach speed over the speed at 4 R (U in the example's output)."""
+    data = np.genfromtxt(lmp.dir / "trajectory.csv", delimiter=",", names=True)
+    touch = int(np.argmax(data["gap_over_R"] <= 0.0))
+    return -data["vz"][:touch].min() / result["U"]
+
+
+def test_settling_sphere_with_the_fluids_inertia(lmp):
+    """The same with added mass (and its increase near the wall) and the history force
+    (examples/settling_sphere's inertia variable): the history slows the approach (St 30.5 at
+    100 R of fall, and still accelerating it at 4 R), the rebound stays within the same 0.05 of
+    e_d exp(-35/St) (0.343 / 0.308, St from the largest approach speed)."""
+    result, e, height = first_rebound(lmp, terminal=False, settle=0.03,
+                                      inertia="added_mass 0.5 history yes wall zplane 0.0 NULL")
+    assert 25.0 < result["St"] < 32.0
+    st = result["St"] * u_in_over_u(lmp, result)
+    assert e == pytest.approx(result["e_d"] * math.exp(-35.0 / st), abs=0.05)
+    assert 0.0 < height < 1.0
 
 
 def test_settling_sphere_given_activation_misses_the_wall(lmp):
