@@ -256,10 +256,41 @@ void FixWallLubrication::compute_walls(bool defer_films)
     }
   };
 
+  // Plane walls: most atoms are far from them. walls_of_atom's own test, on the wall's axis
+  // alone, leaves out the atoms that no wall acts on and that hold no elongation to forget.
+  constexpr int max_planes = 6;
+  struct Plane {
+    int axis, slot;
+    double side, position, shift, velocity;
+  } planes[max_planes];
+  bool planes_only = walls.size() <= max_planes;
+  for (std::size_t k = 0; k < walls.size() && planes_only; k++) {
+    const lub::WallSurface &w = walls[k];
+    planes_only = !w.cylinder;
+    const double s[3] = {shift.x, shift.y, shift.z}, u[3] = {wall_velocity.x, wall_velocity.y, wall_velocity.z};
+    planes[k] = {w.axis, history ? slots[k] : 0, static_cast<double>(w.side), w.position, s[w.axis], u[w.axis]};
+  }
+  const int nplanes = planes_only ? static_cast<int>(walls.size()) : 0;
+  auto may_act = [&](int i) __attribute__((always_inline))
+  {
+    if (!planes_only) return true;
+    const double r = radius[i];
+    const double *v_step = midpoint && model.normal.exact ? midpoint->step_velocity(i) : v[i];
+    for (int k = 0; k < nplanes; k++) {
+      const Plane &w = planes[k];
+      // as lubricated::wall_point, normal_step_velocity and NormalModel::acts, to round-off
+      const double gap = w.side * (x[i][w.axis] - w.position - w.shift) - r;
+      const double u_n = w.side * (v_step[w.axis] - w.velocity);
+      if (gap >= -r && model.normal.acts(gap, r, u_n)) return true;
+      if (history && history[i][w.slot * HISTORY_PER_WALL + 3] != 0.0) return true;
+    }
+    return false;
+  };
+
   // m_e = m; the body's mass for an atom of a rigid body; an immovable atom is left alone.
   if (!contact_mass.active()) {
     for (int i = 0; i < nlocal; i++)
-      if (mask[i] & groupbit) walls_of_atom(i, rmass[i]);
+      if ((mask[i] & groupbit) && may_act(i)) walls_of_atom(i, rmass[i]);
     warn_behind();
     return;
   }
@@ -269,6 +300,6 @@ void FixWallLubrication::compute_walls(bool defer_films)
     contact_mass.fill(inverse_mass.data());
   }
   for (int i = 0; i < nlocal; i++)
-    if ((mask[i] & groupbit) && inverse_mass[i] > 0.0) walls_of_atom(i, 1.0 / inverse_mass[i]);
+    if ((mask[i] & groupbit) && inverse_mass[i] > 0.0 && may_act(i)) walls_of_atom(i, 1.0 / inverse_mass[i]);
   warn_behind();
 }
