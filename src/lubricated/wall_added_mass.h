@@ -25,7 +25,7 @@
 
 namespace lubricated {
 
-constexpr double wall_added_mass_normal = 3.0 / 8.0;      // C_perp / C_m - 1 at h = R
+constexpr double wall_added_mass_normal = 3.0 / 8.0;       // C_perp / C_m - 1 at h = R
 constexpr double wall_added_mass_parallel = 3.0 / 16.0;    // C_par / C_m - 1 at h = R
 
 // One plane wall at rest, normal along axis `axis` (0, 1, 2) at coordinate `position`.

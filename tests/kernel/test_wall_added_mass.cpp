@@ -115,8 +115,8 @@ TEST(WallAddedMass, LagrangeForcesConserveEnergyAndMomentumAlongTheWall)
     EXPECT_NEAR(energy(floor, radius, mass, base, s), e0, 1e-10 * e0) << density_ratio;
     const double p = (mass + base * wall_added_mass(&floor, 1, radius, s.x).mass[0]) * s.v[0];
     EXPECT_NEAR(p, p0, 1e-10 * std::fabs(p0)) << density_ratio;
-    EXPECT_LT(closest, 2.0) << density_ratio;    // it came close to the wall
-    EXPECT_LT(s.v[2], 0.0) << density_ratio;                    // the bounded mass does not stop it
-    EXPECT_LT(std::fabs(s.v[2]), 1.0) << density_ratio;         // but slows it down
+    EXPECT_LT(closest, 2.0) << density_ratio;              // it came close to the wall
+    EXPECT_LT(s.v[2], 0.0) << density_ratio;               // the bounded mass does not stop it
+    EXPECT_LT(std::fabs(s.v[2]), 1.0) << density_ratio;    // but slows it down
   }
 }
