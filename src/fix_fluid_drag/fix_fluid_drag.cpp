@@ -96,6 +96,7 @@ void FixFluidDrag::init()
   last_fraction_step = -1;
   if (history && history_dt == 0.0) history_dt = update->dt;    // the tail's layout, kept
   if (history) basset = lub::BassetHistory(history_window, history_modes, history_dt);
+  if (history && finite_re) mei_adrian = lub::MeiAdrianKernel(basset);
   step_velocity = dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
   if (solves_acceleration()) check_last_force_fix();
   if (history && history_dt > 0.0 && update->dt != history_dt && !dt_warned && comm->me == 0) {
@@ -288,10 +289,15 @@ void FixFluidDrag::post_force(int /*vflag*/)
     for (int d = 0; d < 3; d++)
       fluid_accel[d] = fluid_scale * (acceleration[d].per_atom ? atom_acceleration[d][i] : acceleration[d].value);
     const double m_a = added_mass * buoyant_volume;
-    const double m_h =
-        history ? basset.known_force(history_state[i],
-                                     lub::basset_coefficient(diameter, model.density, model.viscosity), dt, known)
-                : 0.0;
+    double m_h = 0.0;
+    if (history) {
+      const double coefficient = lub::basset_coefficient(diameter, model.density, model.viscosity);
+      if (finite_re) {    // Mei-Adrian: the kernel of this step's slip speed
+        mei_adrian.weigh(lub::mei_adrian_rate(std::sqrt(speed2), diameter, model.viscosity / model.density), dt);
+        m_h = basset.known_force(history_state[i], coefficient, dt, known, mei_adrian.window(), mei_adrian.tail());
+      } else
+        m_h = basset.known_force(history_state[i], coefficient, dt, known);
+    }
     const double m_eff = rmass[i] + m_a + m_h;
     beta = std::min(beta, m_eff / dt);    // the cap above, for the mass that the drag accelerates
     if (magnus || saffman) {

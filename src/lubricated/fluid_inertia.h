@@ -136,7 +136,10 @@ class BassetHistory {
 
   // The history force at this step: returns m_h (the weight of this step's unknown
   // acceleration) and the known part H [force]; both zero at an atom's first evaluation.
-  double known_force(double *s, double coefficient, double dt, double *known) const
+  // Another kernel (history_kernel.h) gives its own weights: window[0..W] for the steps of
+  // lag 0..W over 2 sqrt(dt) (window_weight), tail[k] for the modes (BassetTail::weight).
+  double known_force(double *s, double coefficient, double dt, double *known, const double *window = nullptr,
+                     const double *tail = nullptr) const
   {
     known[0] = known[1] = known[2] = 0.0;
     if (s[0] < 1.5) {
@@ -148,12 +151,12 @@ class BassetHistory {
     for (int d = 0; d < 3; d++) {
       double sum = 0.0;
       for (int lag = 1; lag <= window_; lag++)
-        sum += 2.0 * root * window_weight(lag) * win[3 * (lag - 1) + d];
+        sum += 2.0 * root * (window ? window[lag] : window_weight(lag)) * win[3 * (lag - 1) + d];
       for (int k = 0; k < modes_; k++)
-        sum += tail_.weight[k] * modes[3 * k + d];
+        sum += (tail ? tail[k] : tail_.weight[k]) * modes[3 * k + d];
       known[d] = coefficient * sum;
     }
-    return 2.0 * coefficient * root;
+    return 2.0 * coefficient * root * (window ? window[0] : 1.0);
   }
 
   // This step's wdot = Du/Dt - a, once the acceleration is known.
