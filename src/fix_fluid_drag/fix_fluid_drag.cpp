@@ -96,7 +96,7 @@ void FixFluidDrag::init()
   last_fraction_step = -1;
   if (history && history_dt == 0.0) history_dt = update->dt;    // the tail's layout, kept
   if (history) basset = lub::BassetHistory(history_window, history_modes, history_dt);
-  if (history && finite_re) mei_adrian = lub::MeiAdrianKernel(basset);
+  if (history && finite_re && !mei_adrian.fits(basset)) mei_adrian = lub::MeiAdrianKernel(basset);    // ~30 ms
   step_velocity = dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
   if (solves_acceleration()) check_last_force_fix();
   if (history && history_dt > 0.0 && update->dt != history_dt && !dt_warned && comm->me == 0) {

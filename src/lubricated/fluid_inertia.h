@@ -35,7 +35,8 @@
 // accurate in h; the rates go down from s t_win = 30 by e^-h per mode. Relative error of the
 // kernel (tests/kernel/test_fluid_inertia.cpp): M = 16: 1.0e-3 up to tau = 1e3 t_win, 3.5e-3
 // up to 1e5 t_win; M = 20: 1e-3 up to 1e5 t_win, 3e-3 up to 1e7 t_win. Beyond, the kernel
-// decays exponentially: the far past is forgotten.
+// decays exponentially: the far past is forgotten. A finite-Re kernel (history_kernel.h) keeps
+// this layout and state and only gives other weights to the window's steps and the modes.
 #pragma once
 
 #include "spring_dashpot.h"    // pi

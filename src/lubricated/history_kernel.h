@@ -186,6 +186,12 @@ class MeiAdrianKernel {
     for (double &w : tail_weight_)
       w /= std::sqrt(t_win_);
   }
+  // Laid out for this history (window, modes, tail step): no need to build it again.
+  bool fits(const BassetHistory &history) const
+  {
+    return window_ == history.window() && tail_.modes() == history.modes() &&
+           t_win_ == (history.window() + 1) * history.tail_dt();
+  }
   const double *window() const { return window_weight_.data(); }
   const double *tail() const { return tail_weight_.data(); }
 

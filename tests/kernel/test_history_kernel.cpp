@@ -35,8 +35,8 @@ TEST(MeiAdrianKernel, IsMeiAndAdriansFormula)
   for (double w : {1e-4, 1e-2, 0.07, 0.3})
     for (double s : {1e-5, 1e-3, 1e-2, 0.3}) {
       const double f_h = 0.75 + 0.105 * w * d / nu;
-      const double bracket = std::pow(4 * pi * nu * s / (d * d), 0.25) +
-                             std::sqrt(pi * w * w * w * s * s / (d * nu * f_h * f_h * f_h));
+      const double bracket =
+          std::pow(4 * pi * nu * s / (d * d), 0.25) + std::sqrt(pi * w * w * w * s * s / (d * nu * f_h * f_h * f_h));
       const double formula = 3 * pi * mu * d / (bracket * bracket);
       const double code = basset_coefficient(d, rho, mu) * mei_adrian_kernel(s, mei_adrian_rate(w, d, nu));
       EXPECT_NEAR(code, formula, 1e-12 * formula) << w << " " << s;
@@ -136,7 +136,8 @@ TEST(MeiAdrianKernel, ConstantSlipAccelerationGivesTheKernelsIntegral)
                            mei_adrian_primitive(std::pow(c, 1.0 / 6.0) * std::pow(n, 0.25));
       const double tolerance = n <= 11 ? 1e-12 : 2e-3;
       for (int d = 0; d < 3; d++)
-        ASSERT_NEAR(known[d] + m_h * wdot[d], exact * wdot[d], tolerance * std::abs(exact * wdot[d])) << rate << " " << n;
+        ASSERT_NEAR(known[d] + m_h * wdot[d], exact * wdot[d], tolerance * std::abs(exact * wdot[d]))
+            << rate << " " << n;
     }
   }
 }
