@@ -26,8 +26,8 @@
 // rho; rho is the inverse Laplace transform of the kernel, computed once by the fixed Talbot
 // contour (Abate & Valko, Int. J. Numer. Meth. Eng. 60, 979 (2004)) on a table in
 // gamma = C t_win^(3/2), 16 rows a decade, interpolated linearly in log10 gamma. The weights are
-// positive; relative error of the sum (tests/kernel/test_history_kernel.cpp): 2e-3 of Basset's
-// kernel and 2e-2 of the finite-Re kernel itself, over the range of BassetTail. Beyond the
+// positive; error of the sum (M = 20, tests/kernel/test_history_kernel.cpp): 1.5e-3 of Basset's
+// kernel up to 1e5 t_win (3e-3 up to 1e7 t_win) and 2e-2 of the finite-Re kernel itself. Beyond the
 // table (gamma > 1e6) the tail is below 1e-6 of the window's force and scales as 1/gamma.
 #pragma once
 
