@@ -67,8 +67,8 @@ def test_settling_sphere_follows_the_measured_transient(lmp, case):
       neither of which the quote states: a budget, not a derived bound. The model is 10-14 %
       early on all three (it is not tuned to them).
     - the whole curve v / v_t against the fit, 0.05 of v_t (0.026-0.047 here).
-    The same transient with Basset's kernel (too much memory, the t^-1/2 tail) takes 1.8 to about 9 times
-    tau_95, and without history 0.65-0.8 times: both are outside the tolerance."""
+    The same transient with Basset's kernel (too much memory, the t^-1/2 tail) takes 1.8 to
+    about 9 times tau_95, and without history 0.65-0.8 times: both outside the tolerance."""
     d, rho_p, v_inf, tau95 = MORDANT[case]
     speeds, dt, terminal, t95 = settle(lmp, case, "history yes kernel mei-adrian")
     assert terminal == pytest.approx(v_inf, rel=0.07)
