@@ -100,6 +100,7 @@ void FixFluidDrag::init()
   last_fraction_step = -1;
   if (history && history_dt == 0.0) history_dt = update->dt;    // the tail's layout, kept
   if (history) basset = lub::BassetHistory(history_window, history_modes, history_dt);
+  if (history && finite_re && !mei_adrian.fits(basset)) mei_adrian = lub::MeiAdrianKernel(basset);    // ~30 ms
   step_velocity = dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
   if (solves_acceleration()) check_last_force_fix();
   if (history && history_dt > 0.0 && update->dt != history_dt && !dt_warned && comm->me == 0) {
@@ -292,10 +293,15 @@ void FixFluidDrag::post_force(int /*vflag*/)
     for (int d = 0; d < 3; d++)
       fluid_accel[d] = fluid_scale * (acceleration[d].per_atom ? atom_acceleration[d][i] : acceleration[d].value);
     const double m_a = added_mass * buoyant_volume;
-    const double m_h =
-        history ? basset.known_force(history_state[i],
-                                     lub::basset_coefficient(diameter, model.density, model.viscosity), dt, known)
-                : 0.0;
+    double m_h = 0.0;
+    if (history) {
+      const double coefficient = lub::basset_coefficient(diameter, model.density, model.viscosity);
+      if (finite_re) {    // Mei-Adrian: the kernel of this step's slip speed
+        mei_adrian.weigh(lub::mei_adrian_rate(std::sqrt(speed2), diameter, model.viscosity / model.density), dt);
+        m_h = basset.known_force(history_state[i], coefficient, dt, known, mei_adrian.window(), mei_adrian.tail());
+      } else
+        m_h = basset.known_force(history_state[i], coefficient, dt, known);
+    }
     // Near walls the added mass grows, per axis, and its change brings forces of its own
     // (wall_added_mass.h), with the velocity relative to the fluid, -slip.
     double axis_mass[3] = {m_a, m_a, m_a}, wall_force[3] = {0.0, 0.0, 0.0};

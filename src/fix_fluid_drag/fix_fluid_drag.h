@@ -15,6 +15,7 @@
 #include "lubricated/drag.h"
 #include "lubricated/fluid_inertia.h"
 #include "lubricated/wall_added_mass.h"
+#include "lubricated/history_kernel.h"
 
 #include <string>
 #include <vector>
@@ -73,6 +74,8 @@ class FixFluidDrag : public Fix {
   bool saffman = false;                                       // Saffman-Mei shear lift
   int history_window = 10, history_modes = 20;
   lubricated::BassetHistory basset;
+  bool finite_re = false;    // kernel mei-adrian (history_kernel.h) instead of Basset's
+  lubricated::MeiAdrianKernel mei_adrian;
   double **history_state = nullptr;
   double history_dt = 0.0;    // the step the tail is laid out for (0: not yet)
   bool dt_warned = false;

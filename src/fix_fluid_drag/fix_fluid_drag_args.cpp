@@ -6,7 +6,7 @@
      velocity ux uy uz (numbers or v_name) | superficial yes|no | buoyancy gx gy gz
      bins nx ny nz | every N
      added_mass C_m | wall xplane|yplane|zplane lo hi (NULL or a number) | pressure yes|no | acceleration ax ay az (numbers or v_name)
-     history yes|no | window N_w | tail M | magnus yes|no | vorticity wx wy wz | saffman yes|no
+     history yes|no | kernel basset|mei-adrian | window N_w | tail M | magnus yes|no | vorticity wx wy wz | saffman yes|no
 ------------------------------------------------------------------------- */
 
 #include "fix_fluid_drag.h"
@@ -139,6 +139,16 @@ void FixFluidDrag::parse(int narg, char **arg)
       need(iarg, 1);
       history = yes_no(iarg + 1);
       iarg += 2;
+    } else if (key == "kernel") {
+      need(iarg, 1);
+      const std::string kernel = arg[iarg + 1];
+      if (kernel == "basset")
+        finite_re = false;
+      else if (kernel == "mei-adrian")
+        finite_re = true;
+      else
+        error->all(FLERR, "{}: kernel must be basset or mei-adrian, got '{}'", STYLE, kernel);
+      iarg += 2;
     } else if (key == "window") {
       need(iarg, 1);
       history_window = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
@@ -167,11 +177,12 @@ void FixFluidDrag::parse(int narg, char **arg)
       error->all(FLERR,
                  "{}: unknown keyword '{}' (expected viscosity, density, law, hindrance, velocity, "
                  "superficial, buoyancy, bins, every, added_mass, wall, pressure, acceleration, history, "
-                 "window, tail, magnus, vorticity or saffman)",
+                 "kernel, window, tail, magnus, vorticity or saffman)",
                  STYLE, key);
     }
   }
   if (!have_viscosity) error->all(FLERR, "{}: the viscosity keyword is required", STYLE);
+  if (finite_re && !history) error->all(FLERR, "{}: kernel mei-adrian needs history yes", STYLE);
   if ((gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0) && model.density == 0.0)
     error->all(FLERR, "{}: buoyancy needs the fluid density (density keyword)", STYLE);
   if (fluid_inertia() && model.density == 0.0)

@@ -35,7 +35,8 @@
 // accurate in h; the rates go down from s t_win = 30 by e^-h per mode. Relative error of the
 // kernel (tests/kernel/test_fluid_inertia.cpp): M = 16: 1.0e-3 up to tau = 1e3 t_win, 3.5e-3
 // up to 1e5 t_win; M = 20: 1e-3 up to 1e5 t_win, 3e-3 up to 1e7 t_win. Beyond, the kernel
-// decays exponentially: the far past is forgotten.
+// decays exponentially: the far past is forgotten. A finite-Re kernel (history_kernel.h) keeps
+// this layout and state and only gives other weights to the window's steps and the modes.
 #pragma once
 
 #include "spring_dashpot.h"    // pi
@@ -136,7 +137,10 @@ class BassetHistory {
 
   // The history force at this step: returns m_h (the weight of this step's unknown
   // acceleration) and the known part H [force]; both zero at an atom's first evaluation.
-  double known_force(double *s, double coefficient, double dt, double *known) const
+  // Another kernel (history_kernel.h) gives its own weights: window[0..W] for the steps of
+  // lag 0..W over 2 sqrt(dt) (window_weight), tail[k] for the modes (BassetTail::weight).
+  double known_force(double *s, double coefficient, double dt, double *known, const double *window = nullptr,
+                     const double *tail = nullptr) const
   {
     known[0] = known[1] = known[2] = 0.0;
     if (s[0] < 1.5) {
@@ -148,12 +152,12 @@ class BassetHistory {
     for (int d = 0; d < 3; d++) {
       double sum = 0.0;
       for (int lag = 1; lag <= window_; lag++)
-        sum += 2.0 * root * window_weight(lag) * win[3 * (lag - 1) + d];
+        sum += 2.0 * root * (window ? window[lag] : window_weight(lag)) * win[3 * (lag - 1) + d];
       for (int k = 0; k < modes_; k++)
-        sum += tail_.weight[k] * modes[3 * k + d];
+        sum += (tail ? tail[k] : tail_.weight[k]) * modes[3 * k + d];
       known[d] = coefficient * sum;
     }
-    return 2.0 * coefficient * root;
+    return 2.0 * coefficient * root * (window ? window[0] : 1.0);
   }
 
   // This step's wdot = Du/Dt - a, once the acceleration is known.
