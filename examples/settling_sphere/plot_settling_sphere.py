@@ -25,8 +25,8 @@ FILMS = ["dem", "0.09375", "1"]    # the DEM setting, then the old "give activat
 # The DEM setting over St: the oil's viscosity [Pa s] (the example's is 0.048, St 32.5).
 SWEEP = ["0.1", "0.02", "0.01"]
 # The DEM setting with the fluid's inertia and memory (fix fluid/drag): added mass, its increase
-# near the wall, and the history force.
-INERTIA = "added_mass 0.5 history yes wall zplane 0.0 NULL"
+# near the wall, and the history force with the finite-Re kernel (Re = 36 at the terminal speed).
+INERTIA = "added_mass 0.5 history yes kernel mei-adrian wall zplane 0.0 NULL"
 
 
 def first_rebound(t, gap, vz):

@@ -52,24 +52,19 @@ def test_settling_sphere_follows_legendre_over_stokes(lmp, mu, st_range):
     assert e == pytest.approx(result["legendre_law"], abs=0.05)
 
 
-def u_in_over_u(lmp, result):
-    """The largest approach speed over the speed at 4 R (U in the example's output)."""
-    data = np.genfromtxt(lmp.dir / "trajectory.csv", delimiter=",", names=True)
-    touch = int(np.argmax(data["gap_over_R"] <= 0.0))
-    return -data["vz"][:touch].min() / result["U"]
-
-
 def test_settling_sphere_with_the_fluids_inertia(lmp):
     """The same with added mass (and its increase near the wall) and the history force
-    (examples/settling_sphere's inertia variable): the history slows the approach (St 30.5 at
-    100 R of fall, and still accelerating it at 4 R), the rebound stays within the same 0.05 of
-    e_d exp(-35/St) (0.343 / 0.308, St from the largest approach speed)."""
-    result, e, height = first_rebound(lmp, terminal=False, settle=0.03,
-                                      inertia="added_mass 0.5 history yes wall zplane 0.0 NULL")
-    assert 25.0 < result["St"] < 32.0
-    st = result["St"] * u_in_over_u(lmp, result)
-    assert e == pytest.approx(result["e_d"] * math.exp(-35.0 / st), abs=0.05)
+    (examples/settling_sphere's inertia variable). With the finite-Re kernel (Re 36) the sphere
+    reaches its terminal speed by 4 R and rebounds within the same 0.05 of e_d exp(-35/St)
+    (0.355 / 0.331); with Basset's kernel, far too much memory at this Re, it is still 6 % slow
+    there after 100 R of fall."""
+    inertia = "added_mass 0.5 history yes {} wall zplane 0.0 NULL"
+    result, e, height = first_rebound(lmp, settle=0.03, inertia=inertia.format("kernel mei-adrian"))
+    assert 30.0 < result["St"] < 35.0
+    assert e == pytest.approx(result["legendre_law"], abs=0.05)
     assert 0.0 < height < 1.0
+    slow, _, _ = first_rebound(lmp, terminal=False, settle=0.03, inertia=inertia.format("kernel basset"))
+    assert slow["U"] < 0.96 * result["U"]
 
 
 def test_settling_sphere_given_activation_misses_the_wall(lmp):
