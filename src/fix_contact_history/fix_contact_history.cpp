@@ -262,9 +262,11 @@ void FixContactHistory::unpack_reverse_comm(int n, int *list_, double *buf)
     m += unpack_record(list_[k], buf + m, true);
 }
 
+// The flat arrays, and per atom its two record vectors (their headers and contents).
 double FixContactHistory::memory_usage()
 {
-  double bytes = offset.capacity() * sizeof(int) + touch.capacity() + value.capacity() * sizeof(double);
+  double bytes = offset.capacity() * sizeof(int) + touch.capacity() + value.capacity() * sizeof(double) +
+                 partner.capacity() * sizeof(partner[0]) + partner_value.capacity() * sizeof(partner_value[0]);
   for (size_t i = 0; i < partner.size(); i++)
     bytes += partner[i].capacity() * sizeof(tagint) + partner_value[i].capacity() * sizeof(double);
   return bytes;

@@ -116,6 +116,12 @@ double FixLubricatedWall::compute_vector(int n)
   return global_sums[1 + n];
 }
 
+double FixLubricatedWall::memory_usage()
+{
+  return (film_force.capacity() + film_load.capacity() + shear_film.capacity() + inverse_mass.capacity()) *
+         sizeof(double);
+}
+
 void FixLubricatedWall::add_film_loads(double *load, int nlocal) const
 {
   if (!films_pending) return;

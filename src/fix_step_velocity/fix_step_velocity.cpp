@@ -50,9 +50,22 @@ FixStepVelocity::~FixStepVelocity()
   memory->destroy(whalf);
 }
 
+// INITIAL_INTEGRATE: only to release the set-up's velocities at the first step.
 int FixStepVelocity::setmask()
 {
-  return POST_NEIGHBOR;
+  return POST_NEIGHBOR | INITIAL_INTEGRATE;
+}
+
+// The set-up's velocities live from the set-up that continues a run to its first step.
+void FixStepVelocity::release_setup_velocities()
+{
+  memory->destroy(vhalf);
+  memory->destroy(whalf);
+}
+
+void FixStepVelocity::initial_integrate(int /*vflag*/)
+{
+  if (vhalf) release_setup_velocities();
 }
 
 // The integrator the reconstruction assumes: fix nve/sphere (v += dt/2 f/m, omega += dt/2
@@ -91,6 +104,8 @@ void FixStepVelocity::setup_post_neighbor()
 {
   continuing = continuable && update->whichflag == 1 && update->dt == step_dt && integrated_by_nve_sphere();
   if (!continuing) return;
+  memory->grow(vhalf, atom->nmax, 3, "lubricated/step_velocity:v");
+  memory->grow(whalf, atom->nmax, 3, "lubricated/step_velocity:omega");
   const bool spins = atom->omega_flag;
   for (int i = 0; i < atom->nlocal; i++)
     for (int d = 0; d < 3; d++) {
@@ -105,6 +120,7 @@ void FixStepVelocity::setup_post_neighbor()
 void FixStepVelocity::post_run()
 {
   continuing = false;
+  release_setup_velocities();
   if (update->whichflag != 1) {
     continuable = false;
   } else if (update->ntimestep > update->beginstep) {
@@ -119,8 +135,10 @@ void FixStepVelocity::post_run()
 void FixStepVelocity::grow_arrays(int nmax)
 {
   memory->grow(kick, nmax, VALUES, "lubricated/step_velocity:kick");
-  memory->grow(vhalf, nmax, 3, "lubricated/step_velocity:v");
-  memory->grow(whalf, nmax, 3, "lubricated/step_velocity:omega");
+  if (vhalf) {
+    memory->grow(vhalf, nmax, 3, "lubricated/step_velocity:v");
+    memory->grow(whalf, nmax, 3, "lubricated/step_velocity:omega");
+  }
 }
 
 void FixStepVelocity::copy_arrays(int i, int j, int /*delflag*/)
@@ -219,5 +237,5 @@ void FixStepVelocity::restart(char *buf)
 
 double FixStepVelocity::memory_usage()
 {
-  return 4.0 * atom->nmax * 3 * sizeof(double);
+  return (VALUES + (vhalf ? 6.0 : 0.0)) * atom->nmax * sizeof(double);
 }

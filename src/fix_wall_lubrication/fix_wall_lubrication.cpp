@@ -29,6 +29,8 @@
 #include "update.h"
 #include "utils.h"
 
+#include <algorithm>
+
 #include <cstring>
 #include <string>
 #include <vector>
@@ -84,7 +86,7 @@ FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) : FixL
   if (keeps_history()) {
     restart_peratom = 1;
     create_attribute = 1;
-    maxexchange = HISTORY_SIZE;
+    maxexchange = history_size;
     grow_arrays(atom->nmax);
     for (int i = 0; i < atom->nmax; i++)
       set_arrays(i);
@@ -125,13 +127,17 @@ void FixWallLubrication::add_film_share_bounds(double *bound, int nlocal) const
   if (!model.normal.lubrication.active()) return;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *mask = atom->mask;
-  const bool shear_film = model.tangential.film_active();    // no bound on its share yet: 1
+  const lub::Lubrication &film = model.normal.lubrication;
+  const double dt = update->dt;
+  // A wall contact: m_e = m_i, m_t = 2/7 m_i, the shear film's radius R_f (film_budget.h).
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
-      for (const lub::WallSurface &w : walls)
-        bound[i] += shear_film ? 1.0
-                               : lub::film_share_bound(model.normal.lubrication, w.film_radius(radius[i]), rmass[i],
-                                                       update->dt);
+      for (const lub::WallSurface &w : walls) {
+        const double film_radius = w.film_radius(radius[i]);
+        bound[i] += std::max(lub::film_share_bound(film, film_radius, rmass[i], dt),
+                             lub::shear_film_share_bound(model.tangential, film, film_radius, film_radius,
+                                                         lub::tangential_mass_ratio * rmass[i], dt));
+      }
 }
 
 // A deferred wall film, scaled, in the outputs: the force on the group.
@@ -245,7 +251,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
       const double u_n = lub::normal_step_velocity(w, at, x[i], v_step, r, shift_before, wall_velocity, dt);
       const double film_radius = w.film_radius(r);
       // This wall's friction history of the atom (elongation x y z, touched); out of reach, forgotten.
-      double *h = history ? history[i] + slots[k] * HISTORY_PER_WALL : nullptr;
+      double *h = history ? history[i] + k * HISTORY_PER_WALL : nullptr;
       // A centre behind the wall (a wall placed through or beyond the atoms) is not in contact:
       // the overlap would exceed a radius and launch the atom (warn_behind counts them).
       if (at.gap >= -r && model.normal.acts(at.gap, film_radius, u_n))
