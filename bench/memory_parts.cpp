@@ -44,7 +44,7 @@ int main(int argc, char **argv)
   const double per = 1.0e3 / (1024.0 * 1024.0) / static_cast<double>(lmp->atom->natoms);
   double total = 0.0;
   auto part = [&](const std::string &name, double bytes) {
-    std::printf("PART %-40s %8.4f MB/1000 atoms\n", name.c_str(), bytes * per);
+    std::printf("PART %-40s %8.4f MB/1000 atoms %14.0f bytes\n", name.c_str(), bytes * per, bytes);
     total += bytes;
   };
   part("atom", lmp->atom->memory_usage());
@@ -61,6 +61,7 @@ int main(int argc, char **argv)
   }
   part("modify (other than fixes)", lmp->modify->memory_usage() - fixes);
   std::printf("TOTAL %8.4f MB/1000 atoms (%g atoms)\n", total * per, static_cast<double>(lmp->atom->natoms));
+  std::printf("NMAX %d\n", lmp->atom->nmax);
   delete lmp;
   MPI_Finalize();
   return 0;

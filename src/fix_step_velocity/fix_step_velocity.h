@@ -62,6 +62,7 @@ class FixStepVelocity : public Fix {
   // Owned and ghost: the velocities of a set-up that continues a run, until its first step.
   double **vhalf = nullptr, **whalf = nullptr;
   void release_setup_velocities();
+  void hold_kicks(bool hold);
   bool continuable = false;    // the last run ended with a step of fix nve/sphere
   bool continuing = false;     // this set-up continues it
   double step_dt = 0.0;        // the time step of those steps
