@@ -166,11 +166,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
   clear_sums();
   films_pending = defer_films = defer_films && model.normal.lubrication.active();
   shear_pending = defer_films && model.tangential.film_active();
-  if (defer_films) {
-    film_force.assign(3 * static_cast<std::size_t>(nlocal), 0.0);
-    film_load.assign(nlocal, 0.0);
-  }
-  if (shear_pending) shear_film.assign(6 * static_cast<std::size_t>(nlocal), 0.0);
+  clear_films();
   const double kick_time =
       lub::film_kick_time(update->dt, when != lub::Evaluation::step, when == lub::Evaluation::midpoint_start);
 
@@ -213,13 +209,15 @@ void FixWallLubrication::compute_walls(bool defer_films)
     if (h) h[3] = slot.touched;
     double force = fn.total();
     double share = 0.0;
-    if (defer_films) {    // applied in post_force, within the atom's film budget
+    std::size_t film = 0;    // the atom's entry among the deferred films
+    if (defer_films) {       // applied in post_force, within the atom's film budget
       force = fn.contact;
-      film_force[3 * i] += fn.lubrication * at.n.x;
-      film_force[3 * i + 1] += fn.lubrication * at.n.y;
-      film_force[3 * i + 2] += fn.lubrication * at.n.z;
+      film = film_entry(i);
+      film_force[3 * film] += fn.lubrication * at.n.x;
+      film_force[3 * film + 1] += fn.lubrication * at.n.y;
+      film_force[3 * film + 2] += fn.lubrication * at.n.z;
       share = lub::film_share(fn.lubrication, mass, u_n, kick_time);
-      if (!shear_pending) film_load[i] += share;
+      if (!shear_pending) film_load[film] += share;
     }
     const double fn_xyz[3] = {force * at.n.x, force * at.n.y, force * at.n.z};
     for (int d = 0; d < 3; d++) {
@@ -231,8 +229,8 @@ void FixWallLubrication::compute_walls(bool defer_films)
     // The shear film deferred with the normal one (its force and torque); the contact's share
     // the larger of the two films' (film_budget.h).
     if (shear_pending) {
-      film_load[i] += lub::contact_film_share(share, c.shear_share(kick_time));
-      double *out = &shear_film[6 * i];
+      film_load[film] += lub::contact_film_share(share, c.shear_share(kick_time));
+      double *out = &shear_film[6 * film];
       out[0] += c.shear.x, out[1] += c.shear.y, out[2] += c.shear.z;
       out[3] += c.shear_torque_i.x, out[4] += c.shear_torque_i.y, out[5] += c.shear_torque_i.z;
     }
