@@ -25,6 +25,7 @@ FixContactHistory::FixContactHistory(LAMMPS *lmp, int narg, char **arg) : Fix(lm
   create_attribute = 1;
   maxexchange_dynamic = 1;
   maxexchange = 1;
+  comm_reverse = 1;    // the ghosts' record counts (REVERSE_COUNTS)
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
@@ -80,38 +81,72 @@ void FixContactHistory::post_run()
   mapped = false;
 }
 
+// Entry of the next partner of atom i, whose room store_from_list reserved (count the cursor).
 void FixContactHistory::add(int i, tagint other, const double *v, double sign)
 {
-  partner[i].push_back(other);
+  double *out = &pool[record_first[i] + static_cast<std::size_t>(record_count[i]++) * entry()];
+  out[0] = ubuf(other).d;
   for (int k = 0; k < nvalue; k++)
-    partner_value[i].push_back(sign * v[k]);
+    out[1 + k] = sign * v[k];
 }
 
-// Flat list arrays -> per-atom records of both atoms of every touching pair.
+// Room for `count` entries of atom i at the end of the pool (an atom migrating in or read from a
+// restart file): the pool grows by 1/8 at least, never to twice its size.
+double *FixContactHistory::append_record(int i, int count)
+{
+  const std::size_t at = pool.size(), need = at + static_cast<std::size_t>(count) * entry();
+  if (need > pool.capacity()) pool.reserve(std::max(need, pool.capacity() + pool.capacity() / 8));
+  pool.resize(need);
+  record_first[i] = static_cast<int>(at);
+  record_count[i] = count;
+  return pool.data() + at;
+}
+
+// Flat list arrays -> per-atom records of both atoms of every touching pair: counted first (the
+// ghosts' counts added to their owners', newton on), then written in the room so reserved, the
+// ghosts' sent to their owners.
 void FixContactHistory::store_from_list()
 {
   if (!mapped || !list) return;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const tagint *tag = atom->tag;
   const bool newton = force->newton_pair != 0;
-  for (int i = 0; i < nall; i++) {
-    partner[i].clear();
-    partner_value[i].clear();
-  }
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
-    const int *jlist = list->firstneigh[i];
-    const char *t = touched(i);
-    const double *v = values(i);
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      if (!t[jj]) continue;
-      const int j = jlist[jj] & NEIGHMASK;
-      add(i, tag[j], v + jj * nvalue, 1.0);
-      // With newton off a ghost partner's own rank holds the pair too and stores it there.
-      if (j < nlocal || newton) add(j, tag[i], v + jj * nvalue, -1.0);
+  std::fill(record_count.begin(), record_count.begin() + nall, 0);
+  auto each_touching = [&](auto &&pair) {
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      const int *jlist = list->firstneigh[i];
+      const char *t = touched(i);
+      for (int jj = 0; jj < list->numneigh[i]; jj++)
+        if (t[jj]) pair(i, jlist[jj] & NEIGHMASK, jj);
     }
+  };
+  // With newton off a ghost partner's own rank holds the pair too and stores it there.
+  each_touching([&](int i, int j, int) {
+    record_count[i]++;
+    if (j < nlocal || newton) record_count[j]++;
+  });
+  if (newton) {
+    reverse_what = REVERSE_COUNTS;
+    comm->reverse_comm(this);
   }
-  if (newton) comm->reverse_comm_variable(this);
+  std::size_t total = 0;
+  for (int i = 0; i < nall; i++) {
+    record_first[i] = static_cast<int>(total);
+    total += static_cast<std::size_t>(record_count[i]) * entry();
+    record_count[i] = 0;
+  }
+  if (total > pool.capacity()) pool.reserve(total + total / 8);
+  pool.resize(total);
+  each_touching([&](int i, int j, int jj) {
+    const double *v = values(i) + jj * nvalue;
+    add(i, tag[j], v, 1.0);
+    if (j < nlocal || newton) add(j, tag[i], v, -1.0);
+  });
+  if (newton) {
+    reverse_what = REVERSE_RECORDS;
+    comm->reverse_comm_variable(this);
+  }
 
   int local_max = 1;
   for (int i = 0; i < nlocal; i++)
@@ -135,17 +170,18 @@ void FixContactHistory::map_to_list()
   value.assign(static_cast<size_t>(total) * nvalue, 0.0);
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
-    const std::vector<tagint> &mine = partner[i];
-    if (mine.empty()) continue;
+    const int count = record_count[i];
+    if (count == 0) continue;
+    const double *mine = pool.data() + record_first[i];
     const int *jlist = list->firstneigh[i];
     char *t = touched(i);
     double *v = values(i);
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const tagint other = tag[jlist[jj] & NEIGHMASK];
-      for (size_t k = 0; k < mine.size(); k++) {
-        if (mine[k] != other) continue;
+      for (int k = 0; k < count; k++) {
+        if (static_cast<tagint>(ubuf(mine[k * entry()]).i) != other) continue;
         t[jj] = 1;
-        std::copy_n(partner_value[i].data() + k * nvalue, nvalue, v + jj * nvalue);
+        std::copy_n(mine + k * entry() + 1, nvalue, v + jj * nvalue);
         break;
       }
     }
@@ -155,48 +191,36 @@ void FixContactHistory::map_to_list()
 
 int FixContactHistory::pack_record(int i, double *buf) const
 {
-  int m = 0;
-  buf[m++] = static_cast<double>(partner[i].size());
-  for (size_t k = 0; k < partner[i].size(); k++) {
-    buf[m++] = ubuf(partner[i][k]).d;
-    for (int d = 0; d < nvalue; d++)
-      buf[m++] = partner_value[i][k * nvalue + d];
-  }
-  return m;
+  buf[0] = static_cast<double>(record_count[i]);
+  std::copy_n(pool.data() + record_first[i], static_cast<std::size_t>(record_count[i]) * entry(), buf + 1);
+  return record_size(i);
 }
 
-int FixContactHistory::unpack_record(int i, const double *buf, bool append)
+// A record arriving with atom i (exchange or restart file), appended to the pool.
+int FixContactHistory::unpack_record(int i, const double *buf)
 {
-  if (!append) {
-    partner[i].clear();
-    partner_value[i].clear();
-  }
-  int m = 0;
-  const int n = static_cast<int>(buf[m++]);
-  for (int k = 0; k < n; k++) {
-    partner[i].push_back(static_cast<tagint>(ubuf(buf[m++]).i));
-    for (int d = 0; d < nvalue; d++)
-      partner_value[i].push_back(buf[m++]);
-  }
-  return m;
+  const int count = static_cast<int>(buf[0]);
+  std::copy_n(buf + 1, static_cast<std::size_t>(count) * entry(), append_record(i, count));
+  return 1 + count * entry();
 }
 
 void FixContactHistory::grow_arrays(int nmax)
 {
-  partner.resize(nmax);
-  partner_value.resize(nmax);
+  record_first.reserve(nmax);    // exactly nmax (resize alone may double the capacity)
+  record_count.reserve(nmax);
+  record_first.resize(nmax, 0);
+  record_count.resize(nmax, 0);
 }
 
 void FixContactHistory::copy_arrays(int i, int j, int /*delflag*/)
 {
-  partner[j] = partner[i];
-  partner_value[j] = partner_value[i];
+  record_first[j] = record_first[i];
+  record_count[j] = record_count[i];
 }
 
 void FixContactHistory::set_arrays(int i)
 {
-  partner[i].clear();
-  partner_value[i].clear();
+  record_count[i] = 0;
 }
 
 int FixContactHistory::pack_exchange(int i, double *buf)
@@ -206,7 +230,7 @@ int FixContactHistory::pack_exchange(int i, double *buf)
 
 int FixContactHistory::unpack_exchange(int nlocal, double *buf)
 {
-  return unpack_record(nlocal, buf, false);
+  return unpack_record(nlocal, buf);
 }
 
 int FixContactHistory::pack_restart(int i, double *buf)
@@ -222,7 +246,7 @@ void FixContactHistory::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int k = 0; k < nth; k++)
     m += static_cast<int>(extra[nlocal][m]);
-  unpack_record(nlocal, &extra[nlocal][m + 1], false);
+  unpack_record(nlocal, &extra[nlocal][m + 1]);
 }
 
 int FixContactHistory::size_restart(int i)
@@ -238,7 +262,9 @@ int FixContactHistory::maxsize_restart()
   return 1 + local_max;
 }
 
-// Ghost records (newton on) go to their owners, which append them.
+// Ghosts to their owners (newton on): first their record counts (REVERSE_COUNTS, one value per
+// atom, added to the owners' so that store_from_list reserves room), then the records, which
+// the owners write in that room.
 int FixContactHistory::pack_reverse_comm_size(int n, int first)
 {
   int m = 0;
@@ -249,6 +275,11 @@ int FixContactHistory::pack_reverse_comm_size(int n, int first)
 
 int FixContactHistory::pack_reverse_comm(int n, int first, double *buf)
 {
+  if (reverse_what == REVERSE_COUNTS) {
+    for (int k = 0; k < n; k++)
+      buf[k] = record_count[first + k];
+    return n;
+  }
   int m = 0;
   for (int i = first; i < first + n; i++)
     m += pack_record(i, buf + m);
@@ -257,15 +288,24 @@ int FixContactHistory::pack_reverse_comm(int n, int first, double *buf)
 
 void FixContactHistory::unpack_reverse_comm(int n, int *list_, double *buf)
 {
+  if (reverse_what == REVERSE_COUNTS) {
+    for (int k = 0; k < n; k++)
+      record_count[list_[k]] += static_cast<int>(buf[k]);
+    return;
+  }
   int m = 0;
-  for (int k = 0; k < n; k++)
-    m += unpack_record(list_[k], buf + m, true);
+  for (int k = 0; k < n; k++) {
+    const int owner = list_[k], count = static_cast<int>(buf[m]);
+    const double *in = buf + m + 1;
+    for (int e = 0; e < count; e++, in += entry())
+      add(owner, static_cast<tagint>(ubuf(in[0]).i), in + 1, 1.0);
+    m += 1 + count * entry();
+  }
 }
 
+// The flat arrays, the pool and the per-atom places in it.
 double FixContactHistory::memory_usage()
 {
-  double bytes = offset.capacity() * sizeof(int) + touch.capacity() + value.capacity() * sizeof(double);
-  for (size_t i = 0; i < partner.size(); i++)
-    bytes += partner[i].capacity() * sizeof(tagint) + partner_value[i].capacity() * sizeof(double);
-  return bytes;
+  return (offset.capacity() + record_first.capacity() + record_count.capacity()) * sizeof(int) + touch.capacity() +
+         (value.capacity() + pool.capacity()) * sizeof(double);
 }

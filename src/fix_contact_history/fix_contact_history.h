@@ -9,6 +9,8 @@
    owned atoms directly, ghost atoms (newton on) through a reverse communication to their
    owners. The per-atom records travel with migrating atoms and go into restart files;
    after the new list is built (post_neighbor) they are looked up again by partner tag.
+   The records of all atoms share one pool (an atom's are contiguous: first, count), sized to
+   the touching pairs, not one vector per atom.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_CONTACT_HISTORY_H
@@ -64,16 +66,21 @@ class FixContactHistory : public Fix {
   std::vector<char> touch;
   std::vector<double> value;
 
-  // Per atom (owned and ghost): partners' tags and their values, in this atom's frame.
-  std::vector<std::vector<tagint>> partner;
-  std::vector<std::vector<double>> partner_value;
-  int record_size(int i) const { return 1 + static_cast<int>(partner[i].size()) * (1 + nvalue); }
+  // Per atom (owned and ghost): its partners' records in the pool, each the partner's tag
+  // (ubuf) and the values in this atom's frame (entry doubles), from record_first[i] on.
+  // Records are never changed in place (copy_arrays may share them): a new one is appended.
+  std::vector<double> pool;
+  std::vector<int> record_first, record_count;
+  int entry() const { return 1 + nvalue; }
+  int record_size(int i) const { return 1 + record_count[i] * entry(); }
+  enum { REVERSE_COUNTS, REVERSE_RECORDS } reverse_what = REVERSE_RECORDS;
 
   void store_from_list();
   void map_to_list();
   void add(int i, tagint other, const double *v, double sign);
+  double *append_record(int i, int count);
   int pack_record(int i, double *buf) const;
-  int unpack_record(int i, const double *buf, bool append);
+  int unpack_record(int i, const double *buf);
 };
 
 }    // namespace LAMMPS_NS

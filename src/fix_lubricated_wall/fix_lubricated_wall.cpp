@@ -116,11 +116,34 @@ double FixLubricatedWall::compute_vector(int n)
   return global_sums[1 + n];
 }
 
+double FixLubricatedWall::memory_usage()
+{
+  return film_atom.capacity() * sizeof(int) +
+         (film_force.capacity() + film_load.capacity() + shear_film.capacity() + inverse_mass.capacity()) *
+             sizeof(double);
+}
+
+void FixLubricatedWall::clear_films()
+{
+  film_atom.clear(), film_force.clear(), film_load.clear(), shear_film.clear();
+}
+
+// The deferred films' entry of owned atom i: a new one unless i's walls came just before.
+std::size_t FixLubricatedWall::film_entry(int i)
+{
+  if (!film_atom.empty() && film_atom.back() == i) return film_atom.size() - 1;
+  film_atom.push_back(i);
+  film_force.insert(film_force.end(), 3, 0.0);
+  film_load.push_back(0.0);
+  if (shear_pending) shear_film.insert(shear_film.end(), 6, 0.0);
+  return film_atom.size() - 1;
+}
+
 void FixLubricatedWall::add_film_loads(double *load, int nlocal) const
 {
   if (!films_pending) return;
-  for (int i = 0; i < nlocal; i++)
-    load[i] += film_load[i];
+  for (std::size_t e = 0; e < film_atom.size(); e++)
+    if (film_atom[e] < nlocal) load[film_atom[e]] += film_load[e];
 }
 
 void FixLubricatedWall::apply_films()
@@ -128,13 +151,13 @@ void FixLubricatedWall::apply_films()
   if (!films_pending) return;
   films_pending = false;
   double **f = atom->f, **torque = atom->torque;
-  const int nlocal = atom->nlocal;
   const bool by_pair = pair && pair->keeps_film_budget();
   const bool own = !pair;
   const double *shear = shear_pending ? shear_film.data() : nullptr;
-  for (int i = 0; i < nlocal; i++) {
-    const double *ff = &film_force[3 * i];
-    const double *fs = shear ? shear + 6 * i : nullptr;
+  for (std::size_t e = 0; e < film_atom.size(); e++) {
+    const int i = film_atom[e];
+    const double *ff = &film_force[3 * e];
+    const double *fs = shear ? shear + 6 * e : nullptr;
     const bool film = ff[0] != 0.0 || ff[1] != 0.0 || ff[2] != 0.0;
     if (!film && !(fs && (fs[0] != 0.0 || fs[1] != 0.0 || fs[2] != 0.0))) continue;
     const double scale = by_pair ? pair->film_scale(i) : own ? lub::film_scale_of_load(film_load[i]) : 1.0;

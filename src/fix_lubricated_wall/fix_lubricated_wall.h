@@ -36,6 +36,7 @@ class FixLubricatedWall : public Fix {
   // (force of the walls on the group, and the region's torque), summed over the ranks once.
   double compute_scalar() override;
   double compute_vector(int) override;
+  double memory_usage() override;    // the deferred films and contact masses; walls add their histories
 
   bool wet() const { return coeffs.wet(); }
   // Adds this step's wall-film shares to the owned atoms' loads of the many-body film budget
@@ -50,10 +51,14 @@ class FixLubricatedWall : public Fix {
   class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
   class FixStepVelocity *step_velocity = nullptr;    // the last step's velocities for a set-up
   class PairLubricatedSpringDashpot *pair = nullptr;
-  // Deferred films (a run): per owned atom the normal films' force x y z and their summed share,
-  // and with the shear film its force x y z and torque x y z, scaled with the normal films (one
-  // contact's share: the larger of the two films'); valid while films_pending.
+  // Deferred films (a run): per owned atom with a film (film_atom, in the order compute_walls
+  // meets them, each atom's walls together) the normal films' force x y z and their summed
+  // share, and with the shear film its force x y z and torque x y z, scaled with the normal
+  // films (one contact's share: the larger of the two films'); valid while films_pending.
+  std::vector<int> film_atom;
   std::vector<double> film_force, film_load, shear_film;
+  void clear_films();
+  std::size_t film_entry(int i);
   bool films_pending = false, shear_pending = false;
   // Immovable atoms (skipped: the wall cannot move them) and rigid bodies (m_e = M_body).
   ContactMass contact_mass;

@@ -34,9 +34,6 @@ FixStepVelocity::FixStepVelocity(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, n
   create_attribute = 1;
   comm_forward = VALUES;
   maxexchange = VALUES;
-  grow_arrays(atom->nmax);
-  for (int i = 0; i < atom->nmax; i++)
-    set_arrays(i);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
 }
@@ -50,9 +47,41 @@ FixStepVelocity::~FixStepVelocity()
   memory->destroy(whalf);
 }
 
+// INITIAL_INTEGRATE: only to release the kicks and the set-up's velocities at the first step.
 int FixStepVelocity::setmask()
 {
-  return POST_NEIGHBOR;
+  return POST_NEIGHBOR | INITIAL_INTEGRATE;
+}
+
+// The set-up's velocities live from the set-up that continues a run to its first step.
+void FixStepVelocity::release_setup_velocities()
+{
+  memory->destroy(vhalf);
+  memory->destroy(whalf);
+}
+
+// The kicks live while the state is continuable: from the end of a run that took steps to the
+// first step of the next (a `run 0` keeps them); then the per-atom arrays are empty and the
+// restart files written in a run say that it cannot be continued from them.
+void FixStepVelocity::hold_kicks(bool hold)
+{
+  if (!hold) {
+    memory->destroy(kick);
+    return;
+  }
+  if (kick) return;
+  memory->create(kick, atom->nmax, VALUES, "lubricated/step_velocity:kick");
+  for (int i = 0; i < atom->nmax; i++)
+    set_arrays(i);
+}
+
+void FixStepVelocity::initial_integrate(int /*vflag*/)
+{
+  if (vhalf) release_setup_velocities();
+  if (kick) {
+    continuable = false;
+    hold_kicks(false);
+  }
 }
 
 // The integrator the reconstruction assumes: fix nve/sphere (v += dt/2 f/m, omega += dt/2
@@ -91,6 +120,8 @@ void FixStepVelocity::setup_post_neighbor()
 {
   continuing = continuable && update->whichflag == 1 && update->dt == step_dt && integrated_by_nve_sphere();
   if (!continuing) return;
+  memory->grow(vhalf, atom->nmax, 3, "lubricated/step_velocity:v");
+  memory->grow(whalf, atom->nmax, 3, "lubricated/step_velocity:omega");
   const bool spins = atom->omega_flag;
   for (int i = 0; i < atom->nlocal; i++)
     for (int d = 0; d < 3; d++) {
@@ -98,6 +129,11 @@ void FixStepVelocity::setup_post_neighbor()
       whalf[i][d] = spins ? atom->omega[i][d] - kick[i][3 + d] : 0.0;
     }
   comm->forward_comm(this);
+  // A run with steps needs the kicks no more (its post_run stores new ones); `run 0` keeps them.
+  if (update->endstep > update->beginstep) {
+    continuable = false;
+    hold_kicks(false);
+  }
 }
 
 // A run that took steps of the velocity Verlet leaves a state the next set-up can continue;
@@ -105,38 +141,47 @@ void FixStepVelocity::setup_post_neighbor()
 void FixStepVelocity::post_run()
 {
   continuing = false;
+  release_setup_velocities();
   if (update->whichflag != 1) {
     continuable = false;
   } else if (update->ntimestep > update->beginstep) {
     continuable = integrated_by_nve_sphere();
     step_dt = update->dt;
+    hold_kicks(continuable);
     if (continuable)
       for (int i = 0; i < atom->nlocal; i++)
         store_kick(i);
   }
+  if (!continuable) hold_kicks(false);
 }
 
 void FixStepVelocity::grow_arrays(int nmax)
 {
-  memory->grow(kick, nmax, VALUES, "lubricated/step_velocity:kick");
-  memory->grow(vhalf, nmax, 3, "lubricated/step_velocity:v");
-  memory->grow(whalf, nmax, 3, "lubricated/step_velocity:omega");
+  if (kick) memory->grow(kick, nmax, VALUES, "lubricated/step_velocity:kick");
+  if (vhalf) {
+    memory->grow(vhalf, nmax, 3, "lubricated/step_velocity:v");
+    memory->grow(whalf, nmax, 3, "lubricated/step_velocity:omega");
+  }
 }
 
 void FixStepVelocity::copy_arrays(int i, int j, int /*delflag*/)
 {
+  if (!kick) return;
   for (int k = 0; k < VALUES; k++)
     kick[j][k] = kick[i][k];
 }
 
 void FixStepVelocity::set_arrays(int i)
 {
+  if (!kick) return;
   for (int k = 0; k < VALUES; k++)
     kick[i][k] = 0.0;
 }
 
+// Every rank holds the kicks or none (post_run, the first step and restart are collective).
 int FixStepVelocity::pack_exchange(int i, double *buf)
 {
+  if (!kick) return 0;
   for (int k = 0; k < VALUES; k++)
     buf[k] = kick[i][k];
   return VALUES;
@@ -144,6 +189,7 @@ int FixStepVelocity::pack_exchange(int i, double *buf)
 
 int FixStepVelocity::unpack_exchange(int nlocal, double *buf)
 {
+  if (!kick) return 0;
   for (int k = 0; k < VALUES; k++)
     kick[nlocal][k] = buf[k];
   return VALUES;
@@ -175,6 +221,10 @@ void FixStepVelocity::unpack_forward_comm(int n, int first, double *buf)
 
 int FixStepVelocity::pack_restart(int i, double *buf)
 {
+  if (!kick) {
+    buf[0] = 1;
+    return 1;
+  }
   buf[0] = VALUES + 1;
   for (int k = 0; k < VALUES; k++)
     buf[k + 1] = kick[i][k];
@@ -187,13 +237,15 @@ void FixStepVelocity::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int k = 0; k < nth; k++)
     m += static_cast<int>(extra[nlocal][m]);
+  if (!kick) return;    // a file written in a run, or one that cannot be continued
+  const bool stored = static_cast<int>(extra[nlocal][m]) == VALUES + 1;
   for (int k = 0; k < VALUES; k++)
-    kick[nlocal][k] = extra[nlocal][m + 1 + k];
+    kick[nlocal][k] = stored ? extra[nlocal][m + 1 + k] : 0.0;
 }
 
 int FixStepVelocity::size_restart(int /*i*/)
 {
-  return VALUES + 1;
+  return kick ? VALUES + 1 : 1;
 }
 
 int FixStepVelocity::maxsize_restart()
@@ -215,9 +267,10 @@ void FixStepVelocity::restart(char *buf)
   const auto *data = reinterpret_cast<const double *>(buf);
   continuable = data[0] != 0.0;
   step_dt = data[1];
+  hold_kicks(continuable);
 }
 
 double FixStepVelocity::memory_usage()
 {
-  return 4.0 * atom->nmax * 3 * sizeof(double);
+  return ((kick ? VALUES : 0.0) + (vhalf ? 6.0 : 0.0)) * atom->nmax * sizeof(double);
 }

@@ -34,6 +34,7 @@ class FixStepVelocity : public Fix {
   void post_neighbor() override {}
   void setup_post_neighbor() override;
   void post_run() override;
+  void initial_integrate(int) override;
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -57,11 +58,14 @@ class FixStepVelocity : public Fix {
   double **spin() { return whalf; }
 
  protected:
-  double **kick = nullptr;                        // per atom: last half kick of v and omega
-  double **vhalf = nullptr, **whalf = nullptr;    // owned and ghost: the set-up's velocities
-  bool continuable = false;                       // the last run ended with a step of fix nve/sphere
-  bool continuing = false;                        // this set-up continues it
-  double step_dt = 0.0;                           // the time step of those steps
+  double **kick = nullptr;    // per atom: last half kick of v and omega
+  // Owned and ghost: the velocities of a set-up that continues a run, until its first step.
+  double **vhalf = nullptr, **whalf = nullptr;
+  void release_setup_velocities();
+  void hold_kicks(bool hold);
+  bool continuable = false;    // the last run ended with a step of fix nve/sphere
+  bool continuing = false;     // this set-up continues it
+  double step_dt = 0.0;        // the time step of those steps
   bool integrated_by_nve_sphere() const;
   void store_kick(int i);
 };

@@ -29,6 +29,8 @@
 #include "update.h"
 #include "utils.h"
 
+#include <algorithm>
+
 #include <cstring>
 #include <string>
 #include <vector>
@@ -84,7 +86,7 @@ FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) : FixL
   if (keeps_history()) {
     restart_peratom = 1;
     create_attribute = 1;
-    maxexchange = HISTORY_SIZE;
+    maxexchange = history_size;
     grow_arrays(atom->nmax);
     for (int i = 0; i < atom->nmax; i++)
       set_arrays(i);
@@ -125,13 +127,17 @@ void FixWallLubrication::add_film_share_bounds(double *bound, int nlocal) const
   if (!model.normal.lubrication.active()) return;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *mask = atom->mask;
-  const bool shear_film = model.tangential.film_active();    // no bound on its share yet: 1
+  const lub::Lubrication &film = model.normal.lubrication;
+  const double dt = update->dt;
+  // A wall contact: m_e = m_i, m_t = 2/7 m_i, the shear film's radius R_f (film_budget.h).
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
-      for (const lub::WallSurface &w : walls)
-        bound[i] += shear_film ? 1.0
-                               : lub::film_share_bound(model.normal.lubrication, w.film_radius(radius[i]), rmass[i],
-                                                       update->dt);
+      for (const lub::WallSurface &w : walls) {
+        const double film_radius = w.film_radius(radius[i]);
+        bound[i] += std::max(lub::film_share_bound(film, film_radius, rmass[i], dt),
+                             lub::shear_film_share_bound(model.tangential, film, film_radius, film_radius,
+                                                         lub::tangential_mass_ratio * rmass[i], dt));
+      }
 }
 
 // A deferred wall film, scaled, in the outputs: the force on the group.
@@ -160,11 +166,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
   clear_sums();
   films_pending = defer_films = defer_films && model.normal.lubrication.active();
   shear_pending = defer_films && model.tangential.film_active();
-  if (defer_films) {
-    film_force.assign(3 * static_cast<std::size_t>(nlocal), 0.0);
-    film_load.assign(nlocal, 0.0);
-  }
-  if (shear_pending) shear_film.assign(6 * static_cast<std::size_t>(nlocal), 0.0);
+  clear_films();
   const double kick_time =
       lub::film_kick_time(update->dt, when != lub::Evaluation::step, when == lub::Evaluation::midpoint_start);
 
@@ -207,13 +209,15 @@ void FixWallLubrication::compute_walls(bool defer_films)
     if (h) h[3] = slot.touched;
     double force = fn.total();
     double share = 0.0;
-    if (defer_films) {    // applied in post_force, within the atom's film budget
+    std::size_t film = 0;    // the atom's entry among the deferred films
+    if (defer_films) {       // applied in post_force, within the atom's film budget
       force = fn.contact;
-      film_force[3 * i] += fn.lubrication * at.n.x;
-      film_force[3 * i + 1] += fn.lubrication * at.n.y;
-      film_force[3 * i + 2] += fn.lubrication * at.n.z;
+      film = film_entry(i);
+      film_force[3 * film] += fn.lubrication * at.n.x;
+      film_force[3 * film + 1] += fn.lubrication * at.n.y;
+      film_force[3 * film + 2] += fn.lubrication * at.n.z;
       share = lub::film_share(fn.lubrication, mass, u_n, kick_time);
-      if (!shear_pending) film_load[i] += share;
+      if (!shear_pending) film_load[film] += share;
     }
     const double fn_xyz[3] = {force * at.n.x, force * at.n.y, force * at.n.z};
     for (int d = 0; d < 3; d++) {
@@ -225,8 +229,8 @@ void FixWallLubrication::compute_walls(bool defer_films)
     // The shear film deferred with the normal one (its force and torque); the contact's share
     // the larger of the two films' (film_budget.h).
     if (shear_pending) {
-      film_load[i] += lub::contact_film_share(share, c.shear_share(kick_time));
-      double *out = &shear_film[6 * i];
+      film_load[film] += lub::contact_film_share(share, c.shear_share(kick_time));
+      double *out = &shear_film[6 * film];
       out[0] += c.shear.x, out[1] += c.shear.y, out[2] += c.shear.z;
       out[3] += c.shear_torque_i.x, out[4] += c.shear_torque_i.y, out[5] += c.shear_torque_i.z;
     }
@@ -245,7 +249,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
       const double u_n = lub::normal_step_velocity(w, at, x[i], v_step, r, shift_before, wall_velocity, dt);
       const double film_radius = w.film_radius(r);
       // This wall's friction history of the atom (elongation x y z, touched); out of reach, forgotten.
-      double *h = history ? history[i] + slots[k] * HISTORY_PER_WALL : nullptr;
+      double *h = history ? history[i] + k * HISTORY_PER_WALL : nullptr;
       // A centre behind the wall (a wall placed through or beyond the atoms) is not in contact:
       // the overlap would exceed a radius and launch the atom (warn_behind counts them).
       if (at.gap >= -r && model.normal.acts(at.gap, film_radius, u_n))

@@ -42,12 +42,15 @@ class FixWallLubrication : public FixLubricatedWall {
   void add_film_share_bounds(double *bound, int nlocal) const override;
 
  protected:
-  // Per atom and wall (lo or the cylinder, hi): elongation x y z and a touched flag.
-  static constexpr int HISTORY_PER_WALL = 4, HISTORY_SIZE = 2 * HISTORY_PER_WALL;
+  // Per atom and wall (lo or the cylinder, hi; only the walls given, slot k for walls[k]):
+  // elongation x y z and a touched flag. Restart files before this layout held two slots (lo 0,
+  // hi 1, LEGACY_HISTORY_SIZE values) whatever the walls; unpack_restart reads both.
+  static constexpr int HISTORY_PER_WALL = 4, LEGACY_HISTORY_SIZE = 2 * HISTORY_PER_WALL;
+  int history_size = 0;    // HISTORY_PER_WALL per wall
   double **history = nullptr;
   bool keeps_history() const { return coeffs.friction > 0.0; }
-  std::vector<lubricated::WallSurface> walls;    // lo (or the cylinder), hi; history slots 0, 1
-  std::vector<int> slots;                        // each wall's history slot
+  std::vector<lubricated::WallSurface> walls;    // lo (or the cylinder), hi
+  std::vector<int> legacy_slots;                 // each wall's slot in the two-slot layout
   lubricated::WallMotion motion;
   // The motion's clock: time since the fix was defined = elapsed + (step - step_origin) motion_dt,
   // rebased when the time step changes; in the restart file, so that a restarted run moves on.

@@ -39,13 +39,13 @@ void FixWallLubrication::parse_walls(int narg, char **arg, int iwall)
     if (!(w.radius > 0.0) || !std::isfinite(w.radius))
       error->all(FLERR, "{}: zcylinder radius = {} is out of range (allowed: 0 < R)", STYLE, arg[iwall + 1]);
     walls = {w};
-    slots = {0};
+    legacy_slots = {0};
     iarg = iwall + 2;
   } else {
     const int axis = style[0] - 'x';
     if (axis == 2 && domain->dimension == 2) error->all(FLERR, "{}: zplane is not allowed in 2d", STYLE);
     if (iwall + 3 > narg) error->all(FLERR, "{}: {} needs lo and hi positions", STYLE, style);
-    walls.clear(), slots.clear();
+    walls.clear(), legacy_slots.clear();
     for (int side = 1; side >= -1; side -= 2) {
       const char *word = arg[iwall + (side == 1 ? 1 : 2)];
       if (strcmp(word, "NULL") == 0) continue;
@@ -53,13 +53,14 @@ void FixWallLubrication::parse_walls(int narg, char **arg, int iwall)
       w.axis = axis, w.side = side;
       w.position = utils::numeric(FLERR, word, false, lmp);
       walls.push_back(w);
-      slots.push_back(side == 1 ? 0 : 1);
+      legacy_slots.push_back(side == 1 ? 0 : 1);
     }
     if (walls.empty()) error->all(FLERR, "{}: both walls are NULL", STYLE);
     if (walls.size() == 2 && walls[0].position >= walls[1].position)
       error->all(FLERR, "{}: lo = {} must be below hi = {}", STYLE, walls[0].position, walls[1].position);
     iarg = iwall + 3;
   }
+  history_size = HISTORY_PER_WALL * static_cast<int>(walls.size());
   parse_motion(narg, arg, iarg);
 }
 
@@ -209,64 +210,72 @@ void FixWallLubrication::restart(char *buf)
 
 void FixWallLubrication::grow_arrays(int nmax)
 {
-  memory->grow(history, nmax, HISTORY_SIZE, "wall/lubrication:history");
+  memory->grow(history, nmax, history_size, "wall/lubrication:history");
 }
 
 void FixWallLubrication::copy_arrays(int i, int j, int /*delflag*/)
 {
-  for (int k = 0; k < HISTORY_SIZE; k++)
+  for (int k = 0; k < history_size; k++)
     history[j][k] = history[i][k];
 }
 
 void FixWallLubrication::set_arrays(int i)
 {
-  for (int k = 0; k < HISTORY_SIZE; k++)
+  for (int k = 0; k < history_size; k++)
     history[i][k] = 0.0;
 }
 
 int FixWallLubrication::pack_exchange(int i, double *buf)
 {
-  for (int k = 0; k < HISTORY_SIZE; k++)
+  for (int k = 0; k < history_size; k++)
     buf[k] = history[i][k];
-  return HISTORY_SIZE;
+  return history_size;
 }
 
 int FixWallLubrication::unpack_exchange(int nlocal, double *buf)
 {
-  for (int k = 0; k < HISTORY_SIZE; k++)
+  for (int k = 0; k < history_size; k++)
     history[nlocal][k] = buf[k];
-  return HISTORY_SIZE;
+  return history_size;
 }
 
 int FixWallLubrication::pack_restart(int i, double *buf)
 {
-  buf[0] = HISTORY_SIZE + 1;
-  for (int k = 0; k < HISTORY_SIZE; k++)
+  buf[0] = history_size + 1;
+  for (int k = 0; k < history_size; k++)
     buf[k + 1] = history[i][k];
-  return HISTORY_SIZE + 1;
+  return history_size + 1;
 }
 
+// This layout (history_size values), or the two-slot one of older restart files.
 void FixWallLubrication::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
   int m = 0;
   for (int k = 0; k < nth; k++)
     m += static_cast<int>(extra[nlocal][m]);
-  for (int k = 0; k < HISTORY_SIZE; k++)
-    history[nlocal][k] = extra[nlocal][m + 1 + k];
+  const int stored = static_cast<int>(extra[nlocal][m]) - 1;
+  const double *values = &extra[nlocal][m + 1];
+  for (std::size_t w = 0; w < walls.size(); w++) {
+    const int from = stored == history_size ? static_cast<int>(w) : legacy_slots[w];
+    for (int k = 0; k < HISTORY_PER_WALL; k++)
+      history[nlocal][w * HISTORY_PER_WALL + k] =
+          (from + 1) * HISTORY_PER_WALL <= stored ? values[from * HISTORY_PER_WALL + k] : 0.0;
+  }
 }
 
 int FixWallLubrication::size_restart(int /*i*/)
 {
-  return HISTORY_SIZE + 1;
+  return history_size + 1;
 }
 
 int FixWallLubrication::maxsize_restart()
 {
-  return HISTORY_SIZE + 1;
+  return history_size + 1;
 }
 
 double FixWallLubrication::memory_usage()
 {
-  return history ? static_cast<double>(atom->nmax) * HISTORY_SIZE * sizeof(double) : 0.0;
+  return FixLubricatedWall::memory_usage() +
+         (history ? static_cast<double>(atom->nmax) * history_size * sizeof(double) : 0.0);
 }

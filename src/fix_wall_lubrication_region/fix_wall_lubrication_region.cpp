@@ -201,11 +201,7 @@ void FixWallLubricationRegion::compute_walls(bool defer_films)
   clear_sums();
   films_pending = defer_films = defer_films && model.normal.lubrication.active();
   shear_pending = defer_films && model.tangential.film_active();
-  if (defer_films) {
-    film_force.assign(3 * static_cast<std::size_t>(nlocal), 0.0);
-    film_load.assign(nlocal, 0.0);
-  }
-  if (shear_pending) shear_film.assign(6 * static_cast<std::size_t>(nlocal), 0.0);
+  clear_films();
   const double kick_time =
       lub::film_kick_time(update->dt, when != lub::Evaluation::step, when == lub::Evaluation::midpoint_start);
   update_motion();
@@ -296,19 +292,21 @@ void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, 
     if (h) h[4] = slot.touched;
     const lub::NormalForce &fn = cf.normal;
     double normal = fn.total(), share = 0.0;
-    if (defer_films) {    // applied in post_force, within the atom's film budget
+    std::size_t entry = 0;    // the atom's entry among the deferred films
+    if (defer_films) {        // applied in post_force, within the atom's film budget
       normal = fn.contact;
-      double *ff = &film_force[3 * i];
+      entry = film_entry(i);
+      double *ff = &film_force[3 * entry];
       ff[0] += fn.lubrication * n.x, ff[1] += fn.lubrication * n.y, ff[2] += fn.lubrication * n.z;
       share = lub::film_share(fn.lubrication, mass, rel.u_n, kick_time);
-      if (!shear_pending) film_load[i] += share;
+      if (!shear_pending) film_load[entry] += share;
     }
     lub::Vec3 force = lub::scaled(n, normal), torque;
     local_sums[0] += fn.energy;
     if (tangential_on) {
       if (shear_pending) {
-        film_load[i] += lub::contact_film_share(share, cf.shear_share(kick_time));
-        double *out = &shear_film[6 * i];
+        film_load[entry] += lub::contact_film_share(share, cf.shear_share(kick_time));
+        double *out = &shear_film[6 * entry];
         out[0] += cf.shear.x, out[1] += cf.shear.y, out[2] += cf.shear.z;
         out[3] += cf.shear_torque_i.x, out[4] += cf.shear_torque_i.y, out[5] += cf.shear_torque_i.z;
       }

@@ -119,7 +119,8 @@ int FixWallLubricationRegion::maxsize_restart()
 
 double FixWallLubricationRegion::memory_usage()
 {
-  return history ? static_cast<double>(atom->nmax) * slots * SLOT * sizeof(double) : 0.0;
+  return FixLubricatedWall::memory_usage() + faces.capacity() * sizeof(int) +
+         (history ? static_cast<double>(atom->nmax) * slots * SLOT * sizeof(double) : 0.0);
 }
 
 // Global restart: the step of the last evaluation, the region's displacement and angle then,

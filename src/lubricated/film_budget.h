@@ -58,6 +58,7 @@
 #pragma once
 
 #include "lubricated/lubrication.h"
+#include "lubricated/tangential.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -123,6 +124,23 @@ inline bool any_load_can_exceed_budget(const double *bound, int n)
   for (int i = 0; i < n; i++)
     over |= bound[i] > below_one;
   return over;
+}
+
+// A bound on the shear film's share of any contact (tangential.h, shear_film_force) of film
+// radius R_f (eps = gap / R_f, eps_al from R_f with a grid spacing), reduced radius R_e and
+// tangential mass m_t, for any gap and slip: the film is the damper integrated exactly over the
+// step, F = -(1 - exp(-x)) (m_t / dt) s with x = 2 pi mu_f R_e ln(eps_al / max(eps, eps_1)) dt / m_t,
+// so a_t = |F| t_kick / (m_t |s|) = (1 - exp(-x)) t_kick / dt <= 1 - exp(-x_1), x_1 the rate at
+// eps <= eps_1 (attained there with t_kick = dt); 0 without a shear film or where a grid leaves
+// no film. With the normal film's film_share_bound, a contact's share is at most the larger
+// of the two (contact_film_share).
+inline double shear_film_share_bound(const TangentialModel &shear, const Lubrication &film, double film_radius,
+                                     double reduced_radius, double tangential_mass, double dt)
+{
+  if (!shear.film_active() || !film.active()) return 0.0;
+  const double log_range = std::log(film.activation_for(film_radius) / film.eps_saturation);
+  const double rate = shear.two_pi_mu * reduced_radius * std::max(0.0, log_range) * dt / tangential_mass;
+  return -std::expm1(-rate);
 }
 
 // The shear film's share a_t = |F| t_kick / (m_t |s|) from the squared lengths of its force and

@@ -436,16 +436,18 @@ void PairLubricatedSpringDashpot::read_restart(FILE *fp)
     }
 }
 
+// Every per-type, per-atom and per-pair array of the style (the history is its fix's).
 double PairLubricatedSpringDashpot::memory_usage()
 {
-  return Pair::memory_usage() + coeffs.size() * sizeof(lub::Coefficients) + models.size() * sizeof(lub::ContactModel) +
-         (candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity() + film_i.capacity() +
-          film_j.capacity() + group_count.capacity() + group_keys.capacity() + record_i.capacity() +
-          record_j.capacity()) *
-             sizeof(int) +
-         (step_reach.capacity() + inverse_mass.capacity() + load_of_atom.capacity() + scale_of_atom.capacity() +
-          record_force.capacity() + record_shear.capacity()) *
-             sizeof(double);
+  const double ints = candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity() + film_i.capacity() +
+                      film_j.capacity() + group_count.capacity() + group_keys.capacity() + record_i.capacity() +
+                      record_j.capacity() + network_i.capacity() + network_j.capacity();
+  const double doubles = maxrad.capacity() + max_reach.capacity() + network_load.capacity() + network_bound.capacity() +
+                         step_reach.capacity() + inverse_mass.capacity() + load_of_atom.capacity() +
+                         scale_of_atom.capacity() + record_force.capacity() + record_shear.capacity() +
+                         network_sums.capacity();
+  return Pair::memory_usage() + coeffs.capacity() * sizeof(lub::Coefficients) +
+         models.capacity() * sizeof(lub::ContactModel) + ints * sizeof(int) + doubles * sizeof(double);
 }
 
 // write_data: the pair_coeff words of each type pair (Pair Coeffs: i i; PairIJ Coeffs: i <= j),

@@ -54,9 +54,6 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
     load_of_atom.resize(atom->nmax);
     scale_of_atom.resize(atom->nmax);
   }
-  // The shear film's share has no such bound yet: with it the budget always runs.
-  for (const lub::ContactModel &m : models)
-    if (m.tangential.film_active()) return true;
   double *bound = load_of_atom.data();
   std::fill(bound, bound + nall, 0.0);
   for (int ii = 0; ii < list->inum; ii++) {
@@ -64,13 +61,19 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
     const int *jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      const lub::Lubrication &film = models[index(type[i], type[j])].normal.lubrication;
+      const lub::ContactModel &model = models[index(type[i], type[j])];
+      const lub::Lubrication &film = model.normal.lubrication;
       if (!film.active()) continue;
       const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
       const lub::FilmRadius radius_ij = lub::film_radius_pair(radius[i], radius[j]);
       const double reach = radius[i] + radius[j] + film.reach(radius_ij.value) + skin;
       if (delx * delx + dely * dely + delz * delz >= reach * reach) continue;
-      const double b = lub::film_share_bound(film, radius_ij.value, lub::reduced_mass(rmass[i], rmass[j]), dt);
+      // The contact's share is the larger of its normal and shear films' (film_budget.h).
+      const double m_e = lub::reduced_mass(rmass[i], rmass[j]);
+      const double reduced_radius = radius[i] * radius[j] / (radius[i] + radius[j]);
+      const double b = std::max(lub::film_share_bound(film, radius_ij.value, m_e, dt),
+                                lub::shear_film_share_bound(model.tangential, film, radius_ij.value, reduced_radius,
+                                                            lub::tangential_mass_ratio * m_e, dt));
       bound[i] += b;
       if (newton_pair || j < nlocal) bound[j] += b;
     }
@@ -111,16 +114,36 @@ void PairLubricatedSpringDashpot::begin_film_budget()
   nrecord = 0;
 }
 
+// A vector of exactly `size` elements (resize alone would at least double its capacity).
+template <class T> static void resize_exactly(std::vector<T> &v, std::size_t size)
+{
+  v.reserve(size);
+  v.resize(size);
+}
+
+// Room for `more` records (at most one per pair of the step's lists), with 1/8 spare: the
+// count changes little from step to step, and doubling would hold twice the bed's films.
 void PairLubricatedSpringDashpot::reserve_records(int more)
 {
   if (nrecord + more <= static_cast<int>(record_i.size()) &&
       (!shear_records || record_shear.size() >= 3 * record_i.size()))
     return;
-  const int size = 2 * (nrecord + more);
-  record_i.resize(size);
-  record_j.resize(size);
-  record_force.resize(size);
-  if (shear_records) record_shear.resize(3 * size);
+  const std::size_t need = nrecord + more, size = need + need / 8;
+  resize_exactly(record_i, size);
+  resize_exactly(record_j, size);
+  resize_exactly(record_force, size);
+  if (shear_records) resize_exactly(record_shear, 3 * size);
+}
+
+// Pass 1's lists grow to 5/4 of what they need (a few regrowths in a run's first step), not to
+// twice: the set-up keeps every pair in the film's reach, the steps fewer.
+void PairLubricatedSpringDashpot::grow_pair_lists(std::vector<int> &list_i, std::vector<int> &list_j,
+                                                  std::vector<int> *list_jj, int need)
+{
+  const std::size_t size = need + need / 4;
+  resize_exactly(list_i, size);
+  resize_exactly(list_j, size);
+  if (list_jj) resize_exactly(*list_jj, size);
 }
 
 // Loads summed on the owners, scales sent to the ghosts, then every film whose atoms are over

@@ -240,15 +240,10 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> int PairLubricatedSpringDashpot
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
     const char *touched = TANGENTIAL && history ? history->touched(i) : nullptr;
-    if (ncandidate + jnum > static_cast<int>(candidate_i.size())) {
-      candidate_i.resize(2 * (ncandidate + jnum));
-      candidate_j.resize(2 * (ncandidate + jnum));
-      if (TANGENTIAL) candidate_jj.resize(2 * (ncandidate + jnum));
-    }
-    if (WET && SPLIT && nfilm + jnum > static_cast<int>(film_i.size())) {
-      film_i.resize(2 * (nfilm + jnum));
-      film_j.resize(2 * (nfilm + jnum));
-    }
+    if (ncandidate + jnum > static_cast<int>(candidate_i.size()))
+      grow_pair_lists(candidate_i, candidate_j, TANGENTIAL ? &candidate_jj : nullptr, ncandidate + jnum);
+    if (WET && SPLIT && nfilm + jnum > static_cast<int>(film_i.size()))
+      grow_pair_lists(film_i, film_j, nullptr, nfilm + jnum);
     int *out_i = candidate_i.data(), *out_j = candidate_j.data(), *out_jj = candidate_jj.data();
     int *film_out_i = film_i.data(), *film_out_j = film_j.data();
     for (int jj = 0; jj < jnum; jj++) {

@@ -3,6 +3,7 @@
 // give 0 <= A <= I for any packing (no kinetic energy gained, no mode reversed), change nothing
 // for an isolated contact within its own cap, and be needed: without it dense scenes have
 // eigenvalues of A above 2 (the explicit update then amplifies).
+#include "lubricated/contact.h"
 #include "lubricated/film_budget.h"
 #include "lubricated/normal_model.h"
 #include "lubricated/tangential.h"
@@ -451,6 +452,56 @@ TEST(FilmBudget, ShearFilmShareIsTheFractionOfItsCap)
   EXPECT_EQ(shear_film_share(0.0, 0.0, m_t, dt), 0.0);
   EXPECT_EQ(contact_film_share(0.4, 0.9), 0.9);
   EXPECT_EQ(contact_film_share(0.4, 0.1), 0.4);
+}
+
+// shear_film_share_bound: no shear film's share, for any gap, slip and evaluation, pair or
+// wall, fixed activation or grid, exceeds it, and it is reached (at eps <= eps_1 over a step)
+// where below 1; 0 without a shear film (the pair style and wall/lubrication skip the budget
+// where the larger of each contact's two bounds sum to <= 1 on every atom).
+TEST(FilmBudget, ShearFilmShareBoundHoldsForEveryGapAndSlip)
+{
+  std::mt19937_64 rng(20261126);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double dt = 1e-5, film_radius = 1e-3, reduced_radius = 0.5e-3;
+  for (Partner partner : {Partner::particle, Partner::wall})
+    for (double mu : {1e-4, 1e-2, 10.0})
+      for (double grid : {0.0, 1.25e-4}) {
+        Coefficients c;
+        c.e_dry = 0.9;
+        c.viscosity = mu;
+        c.friction = 0.3;
+        if (grid > 0.0)
+          c.grid_spacing = grid;
+        else
+          c.eps_activation = 0.1;
+        const ContactModel m = make_contact_model(c, partner, dt);
+        const Lubrication &film = m.normal.lubrication;
+        for (double m_t : {1e-9, 1e-6}) {
+          const double bound = shear_film_share_bound(m.tangential, film, film_radius, reduced_radius, m_t, dt);
+          EXPECT_GT(bound, 0.0);
+          EXPECT_LE(bound, 1.0);
+          double largest = 0.0;
+          for (int k = 0; k < 5000; k++) {
+            const double eps = -0.02 + 0.14 * unit(rng);
+            const Vec3 slip{unit(rng) - 0.5, unit(rng) - 0.5, 0.0};
+            const Vec3 f = shear_film_force(m.tangential, slip, eps, film.activation_for(film_radius),
+                                            film.eps_saturation, film.eps_release, reduced_radius, m_t);
+            for (double kick : {dt, 0.5 * dt, 0.25 * dt}) {
+              const double share = shear_film_share(dot(f, f), dot(slip, slip), m_t, kick);
+              largest = std::max(largest, share);
+              ASSERT_LE(share, bound * (1.0 + 1e-12)) << "eps " << eps << " mu " << mu;
+            }
+          }
+          EXPECT_GT(largest, 0.999 * bound) << "mu " << mu << " grid " << grid;
+        }
+      }
+  Coefficients no_shear;
+  no_shear.e_dry = 0.9;
+  no_shear.viscosity = 1e-3;
+  no_shear.eps_activation = 0.1;
+  no_shear.shearfilm = 0;
+  const ContactModel m = make_contact_model(no_shear, Partner::particle, dt);
+  EXPECT_EQ(shear_film_share_bound(m.tangential, m.normal.lubrication, film_radius, reduced_radius, 1e-6, dt), 0.0);
 }
 
 TEST(FilmBudget, DenseScenesWithShearFilmsNeverGainEnergyWithRotation)
