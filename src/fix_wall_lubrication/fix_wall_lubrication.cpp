@@ -272,7 +272,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
     const lub::WallSurface &w = walls[k];
     planes_only = !w.cylinder;
     const double s[3] = {shift.x, shift.y, shift.z}, u[3] = {wall_velocity.x, wall_velocity.y, wall_velocity.z};
-    planes[k] = {w.axis, history ? slots[k] : 0, static_cast<double>(w.side), w.position, s[w.axis], u[w.axis]};
+    planes[k] = {w.axis, static_cast<int>(k), static_cast<double>(w.side), w.position, s[w.axis], u[w.axis]};
   }
   const int nplanes = planes_only ? static_cast<int>(walls.size()) : 0;
   auto may_act = [&](int i) __attribute__((always_inline))
