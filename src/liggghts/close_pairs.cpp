@@ -27,12 +27,10 @@ namespace {
 // The model's tests and film of a step (normal_model.h: NormalModel::acts, contact_possible,
 // film_force_apart) per pair, without branches: the results of pairs that do not need them
 // are discarded by the state.
-template <bool GRID>
-__attribute__((always_inline)) inline void close_loop(const CloseAtoms &atoms, const NormalModel &model, int n,
-                                                      const int *__restrict pair_i, const int *__restrict pair_j,
-                                                      int *__restrict state, double *__restrict force_x,
-                                                      double *__restrict force_y, double *__restrict force_z,
-                                                      double *__restrict film, double *__restrict capacity)
+template <bool GRID> __attribute__((always_inline)) inline void
+close_loop(const CloseAtoms &atoms, const NormalModel &model, int n, const int *__restrict pair_i,
+           const int *__restrict pair_j, int *__restrict state, double *__restrict force_x, double *__restrict force_y,
+           double *__restrict force_z, double *__restrict film, double *__restrict capacity)
 {
   const double *__restrict x = atoms.x;
   const double *__restrict v = atoms.v;
@@ -46,8 +44,8 @@ __attribute__((always_inline)) inline void close_loop(const CloseAtoms &atoms, c
     const double delx = x[3 * i] - x[3 * j], dely = x[3 * i + 1] - x[3 * j + 1], delz = x[3 * i + 2] - x[3 * j + 2];
     const double r = std::sqrt(delx * delx + dely * dely + delz * delz), rinv = 1.0 / r;
     const double en_x = delx * rinv, en_y = dely * rinv, en_z = delz * rinv;
-    const double u_n = (v[3 * i] - v[3 * j]) * en_x + (v[3 * i + 1] - v[3 * j + 1]) * en_y +
-                       (v[3 * i + 2] - v[3 * j + 2]) * en_z;
+    const double u_n =
+        (v[3 * i] - v[3 * j]) * en_x + (v[3 * i + 1] - v[3 * j + 1]) * en_y + (v[3 * i + 2] - v[3 * j + 2]) * en_z;
     const double radi = radius[i], radj = radius[j];
     const double gap = r - (radi + radj);
     const FilmRadius radius_film = film_radius_pair(radi, radj);
@@ -87,15 +85,16 @@ void ClosePairs::evaluate(const CloseAtoms &atoms, const NormalModel &model)
     values->resize(n);
   state.resize(n);
   auto loop = model.lubrication.grid_spacing > 0.0 ? close_loop_grid : close_loop_fixed;
-  loop(atoms, model, n, i_.data(), j_.data(), state.data(), force_x.data(), force_y.data(), force_z.data(),
-       film.data(), capacity.data());
+  loop(atoms, model, n, i_.data(), j_.data(), state.data(), force_x.data(), force_y.data(), force_z.data(), film.data(),
+       capacity.data());
 }
 
 void ClosePairs::apply(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::PairGran *pair, const NormalModel &model,
                        FixLubricatedFilmBudget *budget)
 {
   LAMMPS_NS::Atom *atom = lmp->atom;
-  double **x = atom->x, **v = atom->v, **f = atom->f;
+  double **x = atom->x, **v = atom->v;
+  double *f = atom->f[0];
   const double *radius = atom->radius, *rmass = atom->rmass;
   evaluate({x[0], v[0], radius, rmass}, model);
   const int nlocal = atom->nlocal, newton_pair = lmp->force->newton_pair;
@@ -104,7 +103,7 @@ void ClosePairs::apply(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::PairGran *pair, const 
   for (int c = 0; c < size(); c++) {
     if (state[c] == close_idle) continue;
     const int a = i_[c], b = j_[c];
-    double on_i[3] = {force_x[c], force_y[c], force_z[c]}, film_force = film[c], film_capacity_c = capacity[c];
+    double on_i[3] = {force_x[c], force_y[c], force_z[c]}, film_force = film[c];
     if (state[c] == close_general) {    // as surfacesClose() evaluates one pair
       const double del[3] = {x[a][0] - x[b][0], x[a][1] - x[b][1], x[a][2] - x[b][2]};
       const double r = std::sqrt(del[0] * del[0] + del[1] * del[1] + del[2] * del[2]), r_inverse = 1.0 / r;
@@ -113,23 +112,27 @@ void ClosePairs::apply(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::PairGran *pair, const 
       const double m_e = reduced_mass(rmass[a], rmass[b]);
       const NormalForce fn =
           normal_force(model, r - (radius[a] + radius[b]), film_radius_pair(radius[a], radius[b]), m_e, u_n);
+      if (fn.total() == 0.0) continue;
       for (int d = 0; d < 3; d++)
         on_i[d] = fn.total() * en[d];
       film_force = fn.lubrication;
-      film_capacity_c = film_capacity(m_e, u_n);
+      capacity[c] = film_capacity(m_e, u_n);
       if (record && film_force != 0.0) {
         const double film_on_i[3] = {film_force * en[0], film_force * en[1], film_force * en[2]};
-        budget->add_film(a, b, film_on_i, film_share_of_capacity(film_force, film_capacity_c, kick));
+        budget->add_film(a, b, film_on_i, film_share_of_capacity(film_force, capacity[c], kick));
       }
-    } else if (record && film_force != 0.0) {
-      budget->add_film(a, b, on_i, film_share_of_capacity(film_force, film_capacity_c, kick));
+    } else {
+      if (film_force == 0.0) continue;
+      if (record) budget->add_film(a, b, on_i, film_share_of_capacity(film_force, capacity[c], kick));
     }
-    if (on_i[0] == 0.0 && on_i[1] == 0.0 && on_i[2] == 0.0) continue;
     if (flags_[c]) *flags_[c] |= LIGGGHTS::ContactModels::CONTACT_NORMAL_MODEL;
-    const double relax_a = pair->relax(a), relax_b = newton_pair || b < nlocal ? pair->relax(b) : 0.0;
-    for (int d = 0; d < 3; d++) {
-      f[a][d] += relax_a * on_i[d];
-      f[b][d] -= relax_b * on_i[d];
+    const double relax_a = pair->relax(a);    // LIGGGHTS's force_update()
+    for (int d = 0; d < 3; d++)
+      f[3 * a + d] += relax_a * on_i[d];
+    if (newton_pair || b < nlocal) {
+      const double relax_b = pair->relax(b);
+      for (int d = 0; d < 3; d++)
+        f[3 * b + d] -= relax_b * on_i[d];
     }
   }
 }

@@ -74,6 +74,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   void beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &)
   {
     if (is_wall_) return;
+    if (update->dt != dt_) build_models();
     plain_masses_ =
         hold_bits_ == 0 && (integrate_bits_ & all_group_bit) && pair_->freeze_group_bit() == 0 && !pair_->fr_pair();
     defer_close_ = defer_close_pairs(sidata);
@@ -171,14 +172,12 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // of the smallest radius): in a step the pair's are listed for one loop (close_pairs.h).
   inline void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
   {
-    if (update->dt != dt_) build_models();
     const int t = scdata.itype * (ntypes_ + 1) + scdata.jtype;
-    if (defer_close_ &&
-        (t == close_type_ || (close_type_ < 0 && models_[t].exact && models_[t].lubrication.active()))) {
-      close_type_ = t;    // one type pair's model per pass in the loop; the others one by one
+    if (defer_close_ && (t == close_type_ || first_close_type(t))) {
       close_.add(scdata.i, scdata.j, scdata.contact_flags);
       return;
     }
+    if (update->dt != dt_) build_models();
     const lubricated::NormalModel &model = models_[t];
     if (!(scdata.rsq > 0.0)) return;
     const double r = std::sqrt(scdata.rsq), r_inverse = 1.0 / r;
@@ -215,6 +214,15 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     if (update->setupflag || !sidata.computeflag || !plain_masses_) return false;
     return !pair_->evflag && !pair_->cpl() && !pair_->storeContactForces() && !pair_->storeContactForcesStress() &&
            !pair_->store_sum_normal_force();
+  }
+
+  // The type pair whose close pairs the loop takes this pass: the first wet one with the exact
+  // contact (the others one by one).
+  bool first_close_type(int t)
+  {
+    if (close_type_ >= 0 || !(models_[t].exact && models_[t].lubrication.active())) return false;
+    close_type_ = t;
+    return true;
   }
 
   // The film's radius: 2 r_i r_j / (r_i + r_j) for a pair, r_i at a wall (lubrication.h).
