@@ -90,11 +90,6 @@ bool FixLubricatedStepVelocity::integrated_by_nve_sphere()
   return integrated_bits_ != 0;
 }
 
-bool FixLubricatedStepVelocity::continues() const
-{
-  return continuing_ && update->setupflag;
-}
-
 // After the set-up's migration and borders, before any force: whether the set-up continues the
 // last run, and then the ghosts' kicks (velocities set between runs count as that step's).
 void FixLubricatedStepVelocity::setup_pre_neighbor()

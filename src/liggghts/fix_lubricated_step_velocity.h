@@ -13,6 +13,7 @@
 #pragma once
 
 #include "fix.h"
+#include "update.h"
 
 namespace lubricated {
 namespace liggghts {
@@ -45,8 +46,8 @@ class FixLubricatedStepVelocity : public LAMMPS_NS::Fix {
   void unpack_comm(int n, int first, double *buf) override;
   double memory_usage() override;
 
-  // Whether this set-up continues the last run's steps.
-  bool continues() const;
+  // Whether this set-up continues the last run's steps (inline: asked for every pair).
+  bool continues() const { return continuing_ && update->setupflag; }
   // (kick_i - kick_j) . n, the part of the full-step u_n the last half kick added (j < 0: a wall).
   double kick_along(int i, int j, const double *n) const
   {

@@ -15,7 +15,9 @@
 // model derives it from delta, sets has_force_update, and registers a contact distance
 // factor that covers the film (and one step of approach, which the step-exact contact needs).
 // Every film also enters the many-body film budget (fix_lubricated_film_budget.h), which the
-// pair's model creates; walls join it when a pair model lubricated exists.
+// pair's model creates; walls join it when a pair model lubricated exists. A step evaluates
+// sustained contacts and pairs apart over the step in the kernel's closed forms, and lists the
+// pair's close pairs for one vectorised loop at the end of the pass (close_pairs.h).
 #pragma once
 
 #ifdef NORMAL_MODEL
@@ -34,6 +36,7 @@ NORMAL_MODEL(LUBRICATED, lubricated, 42)
 #include "pair_gran.h"
 #include "update.h"
 
+#include "liggghts/close_pairs.h"
 #include "liggghts/fix_lubricated_film_budget.h"
 #include "liggghts/fix_lubricated_step_velocity.h"
 #include "liggghts/lubricated_properties.h"
@@ -68,13 +71,23 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
 
   void registerSettings(Settings &) {}
   void postSettings(IContactHistorySetup *, ContactModelBase *) {}
-  void beginPass(SurfacesIntersectData &, ForceData &, ForceData &)
+  void beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &)
   {
-    if (!budget_ || is_wall_) return;
+    if (is_wall_) return;
+    if (update->dt != dt_) build_models();
+    plain_masses_ =
+        hold_bits_ == 0 && (integrate_bits_ & all_group_bit) && pair_->freeze_group_bit() == 0 && !pair_->fr_pair();
+    defer_close_ = defer_close_pairs(sidata);
+    close_type_ = -1;
+    close_.clear();
+    if (!budget_) return;
     if (budget_on_ && (neighbor->ago == 0 || update->setupflag || update->dt != bound_dt_)) bound_film_shares();
     budget_->begin_pass();
   }
-  void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+  void endPass(SurfacesIntersectData &, ForceData &, ForceData &)
+  {
+    if (close_.size() > 0) close_.apply(lmp, pair_, models_[close_type_], budget_on_ ? budget_ : nullptr);
+  }
   double stressStrainExponent() { return 1.0; }
 
   // Called at every run's init: read the properties, build the per-type-pair models.
@@ -125,10 +138,12 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
                  u_n = continued ? sidata.vn - step_velocity_->kick_along(sidata.i, partner(sidata), sidata.en)
                                  : sidata.vn;
     const double m_e = is_wall_ ? sidata.meff : pair_reduced_mass(sidata.i, sidata.j);
-    const double radius = is_wall_ ? sidata.radi : lubricated::film_radius_pair(sidata.radi, sidata.radj).value;
+    const lubricated::FilmRadius radius = film_radius(sidata);
     if (!update->setupflag && gap - u_n * dt_ >= (neighbor->contactDistanceFactor - 1.0) * sidata.radsum)
       missed_approach(u_n);    // entered from beyond the close range: no step before was seen
-    const lubricated::NormalForce fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation(continued));
+    lubricated::NormalForce fn;
+    if (!lubricated::liggghts::sustained_contact(model, gap, radius, m_e, u_n, stepping(continued), fn))
+      fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation(continued));
 
     // Tangential and rolling models of LIGGGHTS read these: the solid contact force for the
     // Coulomb limit, and a tangential spring-dashpot with the normal period and restitution
@@ -152,24 +167,32 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     }
   }
 
-  // Near contact: the film, and the step-exact contact's first and last steps.
+  // Near contact: the film, and the step-exact contact's first and last steps. LIGGGHTS calls
+  // this for every pair within its contact distance, which the walls' film sets (reach 0.75 dx
+  // of the smallest radius): in a step the pair's are listed for one loop (close_pairs.h).
   inline void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
   {
-    if (update->dt != dt_) build_models();
     const int t = scdata.itype * (ntypes_ + 1) + scdata.jtype;
+    if (defer_close_ && (t == close_type_ || first_close_type(t))) {
+      close_.add(scdata.i, scdata.j, scdata.contact_flags);
+      return;
+    }
+    if (update->dt != dt_) build_models();
     const lubricated::NormalModel &model = models_[t];
-    const double r = std::sqrt(scdata.rsq);
-    if (r <= 0.0) return;
-    const double en[3] = {scdata.delta[0] / r, scdata.delta[1] / r, scdata.delta[2] / r};
+    if (!(scdata.rsq > 0.0)) return;
+    const double r = std::sqrt(scdata.rsq), r_inverse = 1.0 / r;
+    const double en[3] = {scdata.delta[0] * r_inverse, scdata.delta[1] * r_inverse, scdata.delta[2] * r_inverse};
     const double gap = r - scdata.radsum;
     const double *vi = scdata.v_i, *vj = scdata.v_j;
     const bool continued = step_velocity_->continues();
     double u_n = (vi[0] - vj[0]) * en[0] + (vi[1] - vj[1]) * en[1] + (vi[2] - vj[2]) * en[2];
     if (continued) u_n -= step_velocity_->kick_along(scdata.i, partner(scdata), en);
-    const double radius = is_wall_ ? scdata.radi : lubricated::film_radius_pair(scdata.radi, scdata.radj).value;
-    if (!model.acts(gap, radius, u_n)) return;
+    const lubricated::FilmRadius radius = film_radius(scdata);
+    if (!model.acts(gap, radius.value, u_n)) return;
     const double m_e = reduced_mass(scdata);
-    const lubricated::NormalForce fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation(continued));
+    lubricated::NormalForce fn;
+    if (!lubricated::liggghts::film_apart(model, gap, radius, m_e, u_n, stepping(continued), fn))
+      fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation(continued));
     if (fn.total() == 0.0) return;
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
     apply(fn.total() * (is_wall_ ? scdata.area_ratio : 1.0), en, i_forces, j_forces);
@@ -179,6 +202,35 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   }
 
  private:
+  // LAMMPS's group `all` (always the first group).
+  static constexpr int all_group_bit = 1;
+
+  // Whether this pass (of the pair) leaves the close pairs of one wet type pair with the exact
+  // contact to one loop at its end (close_pairs.h): a step, plain reduced masses, forces applied, and
+  // nothing that reads each pair's force (virial, compute pair/gran/local, stored contact
+  // forces, summed normal forces).
+  bool defer_close_pairs(const SurfacesIntersectData &sidata)
+  {
+    if (update->setupflag || !sidata.computeflag || !plain_masses_) return false;
+    return !pair_->evflag && !pair_->cpl() && !pair_->storeContactForces() && !pair_->storeContactForcesStress() &&
+           !pair_->store_sum_normal_force();
+  }
+
+  // The type pair whose close pairs the loop takes this pass: the first wet one with the exact
+  // contact (the others one by one).
+  bool first_close_type(int t)
+  {
+    if (close_type_ >= 0 || !(models_[t].exact && models_[t].lubrication.active())) return false;
+    close_type_ = t;
+    return true;
+  }
+
+  // The film's radius: 2 r_i r_j / (r_i + r_j) for a pair, r_i at a wall (lubrication.h).
+  lubricated::FilmRadius film_radius(const SurfacesCloseData &scdata) const
+  {
+    return is_wall_ ? lubricated::FilmRadius(scdata.radi) : lubricated::film_radius_pair(scdata.radi, scdata.radj);
+  }
+
   // The mass a contact moves, in overlap and near it (LIGGGHTS gives sidata.meff in overlap only):
   // a rigid body's mass for its atoms, the partner's mass alone against an atom no contact moves
   // (immovable()). A wall's meff is set before either call.
@@ -190,6 +242,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
 
   double pair_reduced_mass(int i, int j) const
   {
+    const double *rmass = atom->rmass;
+    if (plain_masses_) return lubricated::reduced_mass(rmass[i], rmass[j]);
     double m_i, m_j;
     atom_masses(i, j, m_i, m_j);
     const bool held_i = immovable(i), held_j = immovable(j);
@@ -368,6 +422,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
 
   // LIGGGHTS integrates with velocity Verlet (fix nve/sphere); a set-up that continues the last
   // run evaluates as its step did (fix_lubricated_step_velocity.h).
+  bool stepping(bool continued) const { return !update->setupflag || continued; }
   lubricated::Evaluation evaluation(bool continued) const
   {
     return lubricated::evaluation_of(update->setupflag && !continued, false);
@@ -423,6 +478,10 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   lubricated::liggghts::FixLubricatedFilmBudget *budget_ = nullptr;
   lubricated::liggghts::FixLubricatedStepVelocity *step_velocity_ = nullptr;
   bool budget_on_ = false;
+  bool defer_close_ = false;    // this pass lists its close pairs for ClosePairs::apply (endPass)
+  int close_type_ = -1;         // their type pair
+  lubricated::liggghts::ClosePairs close_;
+  bool plain_masses_ = false;    // this pass: every atom integrated, none held or rigid (beginPass)
   bool warned_ = false;
   std::string message_;
   int ntypes_ = 0;
