@@ -42,19 +42,21 @@ run {steps}{chunks}
 print "RESULT atoms $(atoms)"
 """
 
-# Parts of the plugin's compute() by the source file of the instructions (inlined code keeps its
-# file in the debug information): name -> file name patterns.
+# Parts of the plugin's compute(): by the function the instructions run in (the vectorised loops,
+# pass 1), else by their source file (inlined code keeps its file in the debug information):
+# name -> pattern on "file:function".
 PARTS = [
-    ("vectorised loops", r"vector_pairs\.cpp|vector_contacts\.cpp|inline_(log|exp)\.h"),
-    ("normal (normal_model, contact_step, lubrication, spring_dashpot)",
-     r"normal_model\.h|contact_step\.h|lubrication\.h|spring_dashpot\.h"),
-    ("tangential (contact.h, tangential.h)", r"contact\.h|tangential\.h"),
-    ("libm (log, expm1, sqrt)", r"libm|e_log|s_expm1|expm1|w_log|e_exp"),
-    ("film budget (film_budget.h, records)", r"film_budget\.h|pair_lubricated_springdashpot\.h|_bed\.cpp"),
-    ("history (fix_contact_history)", r"fix_contact_history"),
-    ("pair loops (pass 1, general loop's glue, scatter)", r"pair_lubricated_springdashpot_eval\.cpp"),
+    ("vectorised loops (vector_pairs.cpp, kernels inlined)", r":.*vector_pairs::"),
+    ("pass 1 (select_pairs, update_step_reach)", r":.*(select_pairs|update_step_reach)"),
+    ("gathers and scatters of the vectorised loops (vector_forces.h)", r"^\S*vector_forces\.h:"),
+    ("general loop: normal (normal_model, contact_step, lubrication)",
+     r"^\S*(normal_model\.h|contact_step\.h|lubrication\.h|spring_dashpot\.h):"),
+    ("general loop: tangential (contact.h, tangential.h)", r"^\S*(contact\.h|tangential\.h):"),
+    ("general loop: libm (log, expm1, sqrt)", r"libm|e_log|s_expm1|expm1|w_log|e_exp"),
+    ("film budget (film_budget.h, records, correction)", r"^\S*(film_budget\.h|pair_lubricated_springdashpot\.h|_bed\.cpp):"),
+    ("contact history lookups", r"^\S*fix_contact_history"),
+    ("general loop: the rest (evaluate_pair, scatter)", r"^\S*pair_lubricated_springdashpot_eval\.cpp:"),
 ]
-
 
 def run_one(plugin, style, state, args, work):
     pair, wall = beds.styles()[style]
@@ -75,17 +77,16 @@ def run_one(plugin, style, state, args, work):
         raise RuntimeError(f"{style} {state}: run failed\n{log[-2000:]}{proc.stderr[-2000:]}")
     atoms = int(float(lammps_run.parse_results(log)["atoms"]))
     calls = args.steps + (args.steps // beds.KICK_EVERY if active else 1)
-    annotated = subprocess.run(["callgrind_annotate", "--inclusive=no", "--threshold=100", str(out)],
-                               capture_output=True, text=True, check=True).stdout
-    total, parts = 0, {}
+    annotated = subprocess.run(["callgrind_annotate", "--auto=no", "--inclusive=no", "--show-percs=no",
+                                "--threshold=100", str(out)], capture_output=True, text=True, check=True).stdout
+    total = int(re.search(r"^\s*([\d,]+)\s+PROGRAM TOTALS", annotated, re.M).group(1).replace(",", ""))
+    parts = {}
     for line in annotated.splitlines():
-        m = re.match(r"\s*([\d,]+)\s+(?:\([^)]*\)\s+)?(\S.*)$", line)
-        if not m or "PROGRAM TOTALS" in line or ":" not in m.group(2):
+        m = re.match(r"\s*([\d,]+)\s+(\S.*:.*)$", line)    # Ir  file:function (exclusive)
+        if not m or "PROGRAM TOTALS" in line:
             continue
-        ir, where = int(m.group(1).replace(",", "")), m.group(2)
-        total += ir
-        part = next((name for name, pattern in PARTS if re.search(pattern, where.split(":")[0])), "other")
-        parts[part] = parts.get(part, 0) + ir
+        part = next((name for name, pattern in PARTS if re.search(pattern, m.group(2))), "other")
+        parts[part] = parts.get(part, 0) + int(m.group(1).replace(",", ""))
     if not args.keep:
         out.unlink(missing_ok=True)
     scale = 1.0 / (atoms * calls)
