@@ -125,13 +125,17 @@ void FixWallLubrication::add_film_share_bounds(double *bound, int nlocal) const
   if (!model.normal.lubrication.active()) return;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *mask = atom->mask;
-  const bool shear_film = model.tangential.film_active();    // no bound on its share yet: 1
+  const double dt = update->dt;
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
-      for (const lub::WallSurface &w : walls)
-        bound[i] += shear_film ? 1.0
-                               : lub::film_share_bound(model.normal.lubrication, w.film_radius(radius[i]), rmass[i],
-                                                       update->dt);
+      for (const lub::WallSurface &w : walls) {
+        // The larger of the normal and shear films' shares (film_budget.h); R_e = R_f at a wall.
+        const double film_radius = w.film_radius(radius[i]);
+        bound[i] += std::max(lub::film_share_bound(model.normal.lubrication, film_radius, rmass[i], dt),
+                             lub::shear_film_share_bound(model.tangential.two_pi_mu, model.normal.lubrication,
+                                                         film_radius, film_radius,
+                                                         lub::tangential_mass_ratio * rmass[i], dt));
+      }
 }
 
 // A deferred wall film, scaled, in the outputs: the force on the group.

@@ -113,6 +113,23 @@ inline double film_share_bound(const Lubrication &film, double film_radius, doub
   return std::min(1.0, film.six_pi_mu * film_radius * slope * dt / reduced_mass);
 }
 
+// A bound on the shear film's share a_t of a contact (tangential.h, shear_film_force), for any gap
+// and slip: its damping over a step is m_t (1 - exp(-x)) / dt with x = c dt / m_t and the
+// coefficient c = two_pi_mu R_e ln(eps_al / max(eps, eps_1)) at most the saturated one,
+// 2 pi mu_f R_e ln(eps_al / eps_1) (eps_al of the film radius R, fixed or from a grid spacing), so
+// a_t = (1 - exp(-x)) t_kick / dt <= 1 - exp(-x_1) (t_kick <= dt; x_1 with the saturated
+// coefficient, reached by a saturated film over a step: not a loose bound). two_pi_mu: the tangential model's
+// 2 pi mu_f (0: no shear film); R_e = R_i R_j / (R_i + R_j) (a plane wall: R_f); m_t the tangential
+// mass (tangential_mass_ratio m_e).
+inline double shear_film_share_bound(double two_pi_mu, const Lubrication &film, double film_radius,
+                                     double reduced_radius, double tangential_mass, double dt)
+{
+  if (!(two_pi_mu > 0.0 && film.active())) return 0.0;
+  const double eps_al = film.activation_for(FilmRadius(film_radius));
+  const double log_ratio = std::max(0.0, std::log(eps_al / film.eps_saturation));
+  return -std::expm1(-two_pi_mu * reduced_radius * log_ratio * dt / tangential_mass);
+}
+
 // Whether any atom's bound on its load (the sum of its contacts' film_share_bound) can exceed 1,
 // with a margin for the rounding of the film's integral (~1e-12 relative): where none can, the
 // budget has nothing to do until the bounds change.

@@ -54,9 +54,6 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
     load_of_atom.resize(atom->nmax);
     scale_of_atom.resize(atom->nmax);
   }
-  // The shear film's share has no such bound yet: with it the budget always runs.
-  for (const lub::ContactModel &m : models)
-    if (m.tangential.film_active()) return true;
   double *bound = load_of_atom.data();
   std::fill(bound, bound + nall, 0.0);
   for (int ii = 0; ii < list->inum; ii++) {
@@ -64,13 +61,19 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
     const int *jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      const lub::Lubrication &film = models[index(type[i], type[j])].normal.lubrication;
+      const lub::ContactModel &model = models[index(type[i], type[j])];
+      const lub::Lubrication &film = model.normal.lubrication;
       if (!film.active()) continue;
       const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
       const lub::FilmRadius radius_ij = lub::film_radius_pair(radius[i], radius[j]);
       const double reach = radius[i] + radius[j] + film.reach(radius_ij.value) + skin;
       if (delx * delx + dely * dely + delz * delz >= reach * reach) continue;
-      const double b = lub::film_share_bound(film, radius_ij.value, lub::reduced_mass(rmass[i], rmass[j]), dt);
+      // A contact adds the larger of its normal and shear films' shares (film_budget.h).
+      const double m_e = lub::reduced_mass(rmass[i], rmass[j]);
+      const double b = std::max(lub::film_share_bound(film, radius_ij.value, m_e, dt),
+                                lub::shear_film_share_bound(model.tangential.two_pi_mu, film, radius_ij.value,
+                                                            radius[i] * radius[j] / (radius[i] + radius[j]),
+                                                            lub::tangential_mass_ratio * m_e, dt));
       bound[i] += b;
       if (newton_pair || j < nlocal) bound[j] += b;
     }

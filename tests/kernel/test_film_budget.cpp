@@ -3,6 +3,7 @@
 // give 0 <= A <= I for any packing (no kinetic energy gained, no mode reversed), change nothing
 // for an isolated contact within its own cap, and be needed: without it dense scenes have
 // eigenvalues of A above 2 (the explicit update then amplifies).
+#include "lubricated/contact.h"
 #include "lubricated/film_budget.h"
 #include "lubricated/normal_model.h"
 #include "lubricated/tangential.h"
@@ -492,4 +493,58 @@ TEST(FilmBudget, IsolatedContactUsingBothCapsIsNeverScaled)
     EXPECT_EQ(scale[0], 1.0);
     EXPECT_NEAR(largest_eigenvalue_of(film_matrix(s, scale), s.size(), rng), 1.0, 1e-9);
   }
+}
+
+// shear_film_share_bound: no shear film share, for any gap, slip, evaluation and wall or pair,
+// with a fixed activation or a grid spacing, exceeds it, and where it is below 1 the saturated
+// film reaches it (not a loose bound): with it the budget is skipped for shear films too.
+TEST(FilmBudget, ShearShareBoundHoldsForEveryGapAndSlip)
+{
+  std::mt19937_64 rng(20261126);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double dt = 1e-5, radius = 1e-3, m_e = 4e-6, m_t = tangential_mass_ratio * m_e;
+  int tested = 0;
+  for (Partner partner : {Partner::particle, Partner::wall})
+    for (double mu : {1e-4, 1e-3, 1e-2, 1.0})
+      for (double grid : {0.0, 2e-5, 1.25e-4}) {
+        Coefficients c;
+        c.e_dry = 0.9;
+        c.viscosity = mu;
+        c.friction = 0.3;
+        if (grid > 0.0)
+          c.grid_spacing = grid;
+        else
+          c.eps_activation = 0.1;
+        const ContactModel m = make_contact_model(c, partner, dt);
+        ASSERT_TRUE(m.tangential.film_active());
+        const double reduced_radius = partner == Partner::wall ? radius : 0.5 * radius;
+        const double bound =
+            shear_film_share_bound(m.tangential.two_pi_mu, m.normal.lubrication, radius, reduced_radius, m_t, dt);
+        EXPECT_GT(bound, 0.0);
+        EXPECT_LE(bound, 1.0);
+        const double eps_al = m.normal.lubrication.activation_for(radius);
+        double largest = 0.0;
+        for (int k = 0; k < 20000; k++) {
+          const double eps = -0.02 + 0.14 * unit(rng);
+          const Vec3 slip{std::pow(10.0, -4.0 + 4.0 * unit(rng)), unit(rng) - 0.5, 0.0};
+          const Vec3 f = shear_film_force(m.tangential, slip, eps, eps_al, m.normal.lubrication.eps_saturation,
+                                          m.normal.lubrication.eps_release, reduced_radius, m_t);
+          for (double kick : {dt, 0.5 * dt, 0.25 * dt}) {
+            const double share = shear_film_share(dot(f, f), dot(slip, slip), m_t, kick);
+            largest = std::max(largest, share);
+            ASSERT_LE(share, bound * (1.0 + 1e-12)) << "eps " << eps;
+            tested++;
+          }
+        }
+        if (bound < 1.0) {
+          EXPECT_GT(largest, 0.99 * bound) << "mu " << mu << " grid " << grid;
+        }
+      }
+  EXPECT_GT(tested, 0);
+  // No shear film (shearfilm no, or dry): no share.
+  Coefficients dry;
+  dry.e_dry = 0.9;
+  EXPECT_EQ(shear_film_share_bound(0.0, make_normal_model(dry, Partner::particle, dt).lubrication, radius,
+                                   0.5 * radius, m_t, dt),
+            0.0);
 }
