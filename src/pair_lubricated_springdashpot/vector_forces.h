@@ -121,10 +121,11 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
   };
   // Sustained frictional contacts (TANGENTIAL): the elongations gathered, the whole contact
   // vectorised, forces, torques and elongations scattered; the rest through the general loop.
-  double touched[chunk], delta[3][chunk], next[3][chunk], force[3][chunk], torque_unit[3][chunk], on[chunk];
+  double touched[chunk], delta[3][chunk], next[3][chunk], next_touched[chunk], force[3][chunk], torque_unit[3][chunk],
+      on[chunk];
   const vector_pairs::FrictionOut friction_out{
       fpair,    film,     capacity, energy,  force[0], force[1],        force[2], torque_unit[0], torque_unit[1],
-      torque_unit[2], shear[0], shear[1], shear[2], slip_sq, tangential_mass, next[0], next[1], next[2], on};
+      torque_unit[2], shear[0], shear[1], shear[2], slip_sq, tangential_mass, next[0], next[1], next[2], next_touched, on};
   auto friction_pairs = [&](const lubricated::ContactModel &model, const int *pair_i, const int *pair_j,
                             const int *pair_jj, int n) {
     const lubricated::TangentialModel &tm = model.tangential;
@@ -145,7 +146,7 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
       vector_pairs::friction_contacts(atoms, model, in, n, friction_out);
     int nrest = 0;
     for (int c = 0; c < n; c++) {
-      // Branch-free: the pairs not done have zero forces and their elongation unchanged here.
+      // Branch-free: the pairs not done have zero forces and their history unchanged here.
       const int i = pair_i[c], j = pair_j[c];
       const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
       const double fx = delx * fpair[c] + force[0][c], fy = dely * fpair[c] + force[1][c],
@@ -160,6 +161,7 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
       }
       double *h = history->values(i) + 3 * pair_jj[c];
       h[0] = next[0][c], h[1] = next[1][c], h[2] = next[2][c];
+      history->touched(i)[pair_jj[c]] = next_touched[c] != 0.0;
       if (evflag && on[c] != 0.0) ev_tally_xyz(i, j, nlocal, newton_pair, energy[c], 0.0, fx, fy, fz, delx, dely, delz);
       rest[nrest] = c;
       nrest += on[c] == 0.0;

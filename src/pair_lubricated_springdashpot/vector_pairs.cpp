@@ -143,17 +143,18 @@ film_shear_only_loop(const Atoms &atoms, const lub::ContactModel &model, const i
   }
 }
 
-// Pairs in sustained frictional contact that touched at the last step (lubricated/contact.h,
-// contact_forces<true> for such a pair, a step): the normal contact and its saturated film
-// (sustained_contact_force), the tangential spring with its rotation into the tangent plane and
-// the Coulomb cap with the sliding reset (tangential_contact_force), and with SHEAR the shear
-// film, saturated in overlap: its logarithm ln(eps_al / eps_1) is given (`saturated_log`, a
-// fixed eps_al) or, with GRID, taken per pair (log_inline). Every branch of the scalar kernel a
-// select here (-fno-trapping-math: a lane's unused division may be 0/0), in the scalar kernel's
-// order of operations; 0/1 multipliers, not bool masks, where GCC 12 would not if-convert.
+// Kept pairs with friction (lubricated/contact.h, contact_forces<true> over a step) of two kinds:
+// in sustained contact (overlap now, a step ago and a step ahead, as contact_or_film decides) that
+// touched at the last step: the normal contact and its saturated film (sustained_contact_force),
+// the tangential spring with its rotation into the tangent plane and the Coulomb cap with the
+// sliding reset (tangential_contact_force), the shear film (SHEAR, saturated); and apart over the
+// step (no contact can act): the films alone (film_force_apart, the shear film as in
+// film_shear_only) and the elongation forgotten. Every branch of the scalar kernel a select here
+// (-fno-trapping-math: a lane's unused division may be 0/0), in the scalar kernel's order of
+// operations; 0/1 multipliers, not bool masks, where GCC 12 would not if-convert.
 template <bool WET, bool GRID, bool SHEAR, bool INVERSE> __attribute__((always_inline)) static inline void
-friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, double saturated_log,
-                      const int *__restrict pair_i, const int *__restrict pair_j, const double *__restrict touched,
+friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const int *__restrict pair_i,
+                      const int *__restrict pair_j, const double *__restrict touched,
                       const double *__restrict delta_x, const double *__restrict delta_y,
                       const double *__restrict delta_z, int n, double *__restrict fpair, double *__restrict film_force,
                       double *__restrict capacity, double *__restrict energy, double *__restrict force_x,
@@ -161,13 +162,14 @@ friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, double
                       double *__restrict torque_y, double *__restrict torque_z, double *__restrict shear_x,
                       double *__restrict shear_y, double *__restrict shear_z, double *__restrict slip_sq,
                       double *__restrict tangential_mass, double *__restrict new_x, double *__restrict new_y,
-                      double *__restrict new_z, double *__restrict done)
+                      double *__restrict new_z, double *__restrict new_touched, double *__restrict done)
 {
   const Atoms local = atoms;
   const lub::NormalModel normal = model.normal;
   const lub::TangentialModel tm = model.tangential;
   const double *__restrict omega = local.omega;
   const double *__restrict v = local.v;
+  const double dt = normal.step.dt, inv_dt = normal.step.inv_dt;
   const double eps_1 = normal.lubrication.eps_saturation, eps_2 = normal.lubrication.eps_release;
   const double dx_al = lub::Lubrication::grid_activation * normal.lubrication.grid_spacing;
   for (int c = 0; c < n; c++) {
@@ -177,9 +179,14 @@ friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, double
     bool sustained;
     // Dry: the film terms are 0 (six_pi_mu = 0).
     const lub::NormalForce fn = lub::sustained_contact_force<GRID>(normal, gap, g.film, g.m_e, g.u_n, sustained);
-    // Whether the lane is done here, as a double (a pair of immovable atoms, m_e = 0, is not: the
-    // general loop drops its history); m_e > 0 in a bool mask stops GCC 12 with inverse masses.
-    const double on = (sustained & (touched[c] != 0.0) & (g.r > 0.0) ? 1.0 : 0.0) * (g.m_e > 0.0 ? 1.0 : 0.0);
+    const bool apart = !lub::contact_possible(gap, g.u_n, dt);
+    const double film_apart =
+        WET ? lub::film_force_apart<GRID>(normal.lubrication, gap, g.film, g.m_e, g.u_n, dt, inv_dt) : 0.0;
+    const bool stick = sustained & (touched[c] != 0.0);
+    // Whether the lane is done here, as doubles (a pair of immovable atoms, m_e = 0, is not: the
+    // general loop drops it); m_e > 0 in a bool mask stops GCC 12 with inverse masses.
+    const double on = ((stick | apart) & (g.r > 0.0) ? 1.0 : 0.0) * (g.m_e > 0.0 ? 1.0 : 0.0);
+    const double in_contact = stick ? on : 0.0;
     const bool ok = on != 0.0;
     // The slip (lubricated/tangential.h): (v_i - v_j) - (R_i w_i + R_j w_j) x n, its normal part removed.
     const double radi = local.radius[i], radj = local.radius[j];
@@ -215,31 +222,36 @@ friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, double
     dx = slides ? (fx * inv_m_t + sx * tm.damping_step) * inv_k : dx;
     dy = slides ? (fy * inv_m_t + sy * tm.damping_step) * inv_k : dy;
     dz = slides ? (fz * inv_m_t + sz * tm.damping_step) * inv_k : dz;
+    fx *= in_contact, fy *= in_contact, fz *= in_contact;    // apart: no spring
     double hx = 0.0, hy = 0.0, hz = 0.0;
     if (SHEAR) {
-      // Saturated in overlap: 2 pi mu R_e ln(eps_al / eps_1), between eps_2 and eps_al.
+      // 2 pi mu R_e ln(eps_al / max(eps, eps_1)) between eps_2 and eps_al (saturated in overlap).
       const double eps = gap / g.film.value;
       const double eps_al = GRID ? std::max(dx_al * (1.0 / g.film.value), eps_1) : normal.lubrication.eps_activation;
-      const double in_film = (eps < eps_al) & (eps > eps_2) ? 1.0 : 0.0;
-      const double l = GRID ? lub::log_inline(eps_al / eps_1) : saturated_log;
+      const double in_film = (eps < eps_al) & (eps > eps_2) ? on : 0.0;
       const double mass = ok ? m_t : 1.0;
-      const double rate = in_film * tm.two_pi_mu * (radi * radj / g.radsum) * l * tm.dt / mass;
+      const double rate = in_film * tm.two_pi_mu * (radi * radj / g.radsum) *
+                          lub::log_inline(eps_al / std::max(eps, eps_1)) * tm.dt / mass;
       const double damping = lub::one_minus_exp_neg_inline(rate) * mass / tm.dt;
       hx = -damping * sx, hy = -damping * sy, hz = -damping * sz;
       fx += hx, fy += hy, fz += hz;
     }
-    fpair[c] = on * fn.total() * g.rinv;
-    film_force[c] = on * fn.lubrication;
+    const double normal_total = stick ? fn.total() : film_apart;
+    fpair[c] = on * normal_total * g.rinv;
+    film_force[c] = on * (stick ? fn.lubrication : film_apart);
     capacity[c] = lub::film_capacity(g.m_e, g.u_n);
-    energy[c] = on * fn.energy;
-    force_x[c] = on * fx, force_y[c] = on * fy, force_z[c] = on * fz;
+    energy[c] = in_contact * fn.energy;
+    force_x[c] = fx, force_y[c] = fy, force_z[c] = fz;
     // -n x F: the torque on i per unit of R_i (on j per unit of R_j).
-    torque_x[c] = -on * (ny * fz - nz * fy), torque_y[c] = -on * (nz * fx - nx * fz);
-    torque_z[c] = -on * (nx * fy - ny * fx);
-    shear_x[c] = on * hx, shear_y[c] = on * hy, shear_z[c] = on * hz;
+    torque_x[c] = -(ny * fz - nz * fy), torque_y[c] = -(nz * fx - nx * fz), torque_z[c] = -(nx * fy - ny * fx);
+    shear_x[c] = hx, shear_y[c] = hy, shear_z[c] = hz;
     slip_sq[c] = sx * sx + sy * sy + sz * sz;
     tangential_mass[c] = ok ? m_t : 1.0;
-    new_x[c] = ok ? dx : delta_x[c], new_y[c] = ok ? dy : delta_y[c], new_z[c] = ok ? dz : delta_z[c];
+    // Apart: the elongation forgotten; not done: as it was.
+    new_x[c] = stick ? dx : ok ? 0.0 : delta_x[c];
+    new_y[c] = stick ? dy : ok ? 0.0 : delta_y[c];
+    new_z[c] = stick ? dz : ok ? 0.0 : delta_z[c];
+    new_touched[c] = ok ? in_contact : touched[c];
     done[c] = on;
   }
 }
@@ -317,7 +329,7 @@ void film_shear_only_by_inverse(const Atoms &atoms, const lub::ContactModel &mod
 
 #define CONTACT_ARGUMENTS(o)                                                                                           \
   o.fpair, o.film, o.capacity, o.energy, o.force_x, o.force_y, o.force_z, o.torque_x, o.torque_y, o.torque_z,          \
-      o.shear_x, o.shear_y, o.shear_z, o.slip_sq, o.tangential_mass, o.new_x, o.new_y, o.new_z, o.done
+      o.shear_x, o.shear_y, o.shear_z, o.slip_sq, o.tangential_mass, o.new_x, o.new_y, o.new_z, o.new_touched, o.done
 
 // One entry point per mass form; the model picks the loop (dry; wet with or without a grid and a
 // shear film).
@@ -327,10 +339,8 @@ friction_contacts_of(const Atoms &atoms, const lub::ContactModel &model, const F
 {
   const lub::Lubrication &film = model.normal.lubrication;
   const bool wet = film.active(), grid = film.grid_spacing > 0.0, shear = model.tangential.film_active();
-  // A fixed eps_al: the shear film's saturated logarithm once (as the scalar kernel's std::log).
-  const double saturated_log = wet && !grid ? std::log(film.eps_activation / film.eps_saturation) : 0.0;
 #define FRICTION_LOOP(W, G, S)                                                                                         \
-  friction_contact_loop<W, G, S, INVERSE>(atoms, model, saturated_log, in.pair_i, in.pair_j, in.touched, in.delta_x,   \
+  friction_contact_loop<W, G, S, INVERSE>(atoms, model, in.pair_i, in.pair_j, in.touched, in.delta_x,   \
                                           in.delta_y, in.delta_z, n, CONTACT_ARGUMENTS(out))
   if (!wet)
     FRICTION_LOOP(false, false, false);
