@@ -247,10 +247,11 @@ friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const 
     shear_x[c] = hx, shear_y[c] = hy, shear_z[c] = hz;
     slip_sq[c] = sx * sx + sy * sy + sz * sz;
     tangential_mass[c] = ok ? m_t : 1.0;
-    // Apart: the elongation forgotten; not done: as it was.
-    new_x[c] = stick ? dx : ok ? 0.0 : delta_x[c];
-    new_y[c] = stick ? dy : ok ? 0.0 : delta_y[c];
-    new_z[c] = stick ? dz : ok ? 0.0 : delta_z[c];
+    // Apart: a touching contact's elongation forgotten; else (not done) as it was.
+    const bool forget = ok & (touched[c] != 0.0), spring = in_contact != 0.0;
+    new_x[c] = spring ? dx : forget ? 0.0 : delta_x[c];
+    new_y[c] = spring ? dy : forget ? 0.0 : delta_y[c];
+    new_z[c] = spring ? dz : forget ? 0.0 : delta_z[c];
     new_touched[c] = ok ? in_contact : touched[c];
     done[c] = on;
   }
