@@ -131,10 +131,10 @@ void FixWallLubrication::add_film_share_bounds(double *bound, int nlocal) const
       for (const lub::WallSurface &w : walls) {
         // The larger of the normal and shear films' shares (film_budget.h); R_e = R_f at a wall.
         const double film_radius = w.film_radius(radius[i]);
-        bound[i] += std::max(lub::film_share_bound(model.normal.lubrication, film_radius, rmass[i], dt),
-                             lub::shear_film_share_bound(model.tangential.two_pi_mu, model.normal.lubrication,
-                                                         film_radius, film_radius,
-                                                         lub::tangential_mass_ratio * rmass[i], dt));
+        bound[i] +=
+            std::max(lub::film_share_bound(model.normal.lubrication, film_radius, rmass[i], dt),
+                     lub::shear_film_share_bound(model.tangential.two_pi_mu, model.normal.lubrication, film_radius,
+                                                 film_radius, lub::tangential_mass_ratio * rmass[i], dt));
       }
 }
 

@@ -114,18 +114,20 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
         continue;
       }
       const lubricated::Vec3 force{shear[0][c], shear[1][c], shear[2][c]};
-      const double shear_share = lubricated::shear_film_share(lubricated::dot(force, force), slip_sq[c], tangential_mass[c], dt);
-      this->record_films(pair_i[c], pair_j[c], film[c], force, lubricated::contact_film_share(share, shear_share), nlocal,
-                         newton_pair);
+      const double shear_share =
+          lubricated::shear_film_share(lubricated::dot(force, force), slip_sq[c], tangential_mass[c], dt);
+      this->record_films(pair_i[c], pair_j[c], film[c], force, lubricated::contact_film_share(share, shear_share),
+                         nlocal, newton_pair);
     }
   };
   // Sustained frictional contacts (TANGENTIAL): the elongations gathered, the whole contact
   // vectorised, forces, torques and elongations scattered; the rest through the general loop.
   double touched[chunk], delta[3][chunk], next[3][chunk], next_touched[chunk], force[3][chunk], torque_unit[3][chunk],
       on[chunk];
-  const vector_pairs::FrictionOut friction_out{
-      fpair,    film,     capacity, energy,  force[0], force[1],        force[2], torque_unit[0], torque_unit[1],
-      torque_unit[2], shear[0], shear[1], shear[2], slip_sq, tangential_mass, next[0], next[1], next[2], next_touched, on};
+  const vector_pairs::FrictionOut friction_out{fpair,    film,     capacity,       energy,         force[0],
+                                               force[1], force[2], torque_unit[0], torque_unit[1], torque_unit[2],
+                                               shear[0], shear[1], shear[2],       slip_sq,        tangential_mass,
+                                               next[0],  next[1],  next[2],        next_touched,   on};
   auto friction_pairs = [&](const lubricated::ContactModel &model, const int *pair_i, const int *pair_j,
                             const int *pair_jj, int n) {
     const lubricated::TangentialModel &tm = model.tangential;
@@ -175,8 +177,8 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
           continue;
         }
         const lubricated::Vec3 shear_force{shear[0][c], shear[1][c], shear[2][c]};
-        const double shear_share = lubricated::shear_film_share(lubricated::dot(shear_force, shear_force), slip_sq[c],
-                                                                tangential_mass[c], dt);
+        const double shear_share =
+            lubricated::shear_film_share(lubricated::dot(shear_force, shear_force), slip_sq[c], tangential_mass[c], dt);
         this->record_films(pair_i[c], pair_j[c], film[c], shear_force,
                            lubricated::contact_film_share(share, shear_share), nlocal, newton_pair);
       }

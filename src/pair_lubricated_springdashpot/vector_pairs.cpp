@@ -154,15 +154,15 @@ film_shear_only_loop(const Atoms &atoms, const lub::ContactModel &model, const i
 // operations; 0/1 multipliers, not bool masks, where GCC 12 would not if-convert.
 template <bool WET, bool GRID, bool SHEAR, bool INVERSE> __attribute__((always_inline)) static inline void
 friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const int *__restrict pair_i,
-                      const int *__restrict pair_j, const double *__restrict touched,
-                      const double *__restrict delta_x, const double *__restrict delta_y,
-                      const double *__restrict delta_z, int n, double *__restrict fpair, double *__restrict film_force,
-                      double *__restrict capacity, double *__restrict energy, double *__restrict force_x,
-                      double *__restrict force_y, double *__restrict force_z, double *__restrict torque_x,
-                      double *__restrict torque_y, double *__restrict torque_z, double *__restrict shear_x,
-                      double *__restrict shear_y, double *__restrict shear_z, double *__restrict slip_sq,
-                      double *__restrict tangential_mass, double *__restrict new_x, double *__restrict new_y,
-                      double *__restrict new_z, double *__restrict new_touched, double *__restrict done)
+                      const int *__restrict pair_j, const double *__restrict touched, const double *__restrict delta_x,
+                      const double *__restrict delta_y, const double *__restrict delta_z, int n,
+                      double *__restrict fpair, double *__restrict film_force, double *__restrict capacity,
+                      double *__restrict energy, double *__restrict force_x, double *__restrict force_y,
+                      double *__restrict force_z, double *__restrict torque_x, double *__restrict torque_y,
+                      double *__restrict torque_z, double *__restrict shear_x, double *__restrict shear_y,
+                      double *__restrict shear_z, double *__restrict slip_sq, double *__restrict tangential_mass,
+                      double *__restrict new_x, double *__restrict new_y, double *__restrict new_z,
+                      double *__restrict new_touched, double *__restrict done)
 {
   const Atoms local = atoms;
   const lub::NormalModel normal = model.normal;
@@ -341,8 +341,8 @@ friction_contacts_of(const Atoms &atoms, const lub::ContactModel &model, const F
   const lub::Lubrication &film = model.normal.lubrication;
   const bool wet = film.active(), grid = film.grid_spacing > 0.0, shear = model.tangential.film_active();
 #define FRICTION_LOOP(W, G, S)                                                                                         \
-  friction_contact_loop<W, G, S, INVERSE>(atoms, model, in.pair_i, in.pair_j, in.touched, in.delta_x,   \
-                                          in.delta_y, in.delta_z, n, CONTACT_ARGUMENTS(out))
+  friction_contact_loop<W, G, S, INVERSE>(atoms, model, in.pair_i, in.pair_j, in.touched, in.delta_x, in.delta_y,      \
+                                          in.delta_z, n, CONTACT_ARGUMENTS(out))
   if (!wet)
     FRICTION_LOOP(false, false, false);
   else if (grid && shear)

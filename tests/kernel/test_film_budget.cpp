@@ -544,7 +544,7 @@ TEST(FilmBudget, ShearShareBoundHoldsForEveryGapAndSlip)
   // No shear film (shearfilm no, or dry): no share.
   Coefficients dry;
   dry.e_dry = 0.9;
-  EXPECT_EQ(shear_film_share_bound(0.0, make_normal_model(dry, Partner::particle, dt).lubrication, radius,
-                                   0.5 * radius, m_t, dt),
+  EXPECT_EQ(shear_film_share_bound(0.0, make_normal_model(dry, Partner::particle, dt).lubrication, radius, 0.5 * radius,
+                                   m_t, dt),
             0.0);
 }

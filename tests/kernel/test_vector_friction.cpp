@@ -51,12 +51,15 @@ Scene draw_scene(std::mt19937_64 &rng, int pairs, double dt)
     const double r = ri + rj + gap;
     const double xi[3] = {around(0.01), around(0.01), around(0.01)};
     const double u_n = (unit(rng) < 0.5 ? -1.0 : 1.0) * std::pow(10.0, -5.0 + 4.0 * unit(rng));
-    for (int d = 0; d < 3; d++) s.x.push_back(xi[d]);
+    for (int d = 0; d < 3; d++)
+      s.x.push_back(xi[d]);
     s.x.push_back(xi[0] - r * nx), s.x.push_back(xi[1] - r * ny), s.x.push_back(xi[2] - r * nz);
     const double vt[3] = {around(0.05), around(0.05), around(0.05)};
     s.v.push_back(vt[0] + u_n * nx), s.v.push_back(vt[1] + u_n * ny), s.v.push_back(vt[2] + u_n * nz);
-    for (int d = 0; d < 3; d++) s.v.push_back(0.0);
-    for (int d = 0; d < 6; d++) s.omega.push_back(around(50.0));
+    for (int d = 0; d < 3; d++)
+      s.v.push_back(0.0);
+    for (int d = 0; d < 6; d++)
+      s.omega.push_back(around(50.0));
     s.radius.push_back(ri), s.radius.push_back(rj);
     const double mi = 2500.0 * 4.18879 * ri * ri * ri, mj = 2500.0 * 4.18879 * rj * rj * rj;
     s.rmass.push_back(mi), s.rmass.push_back(mj);
@@ -81,13 +84,14 @@ void check_model(const Coefficients &c, bool inverse_masses, unsigned seed, int 
   std::mt19937_64 rng(seed);
   const int pairs = 256;
   const Scene s = draw_scene(rng, pairs, dt);
-  vp::Atoms atoms{s.x.data(),     s.v.data(), s.radius.data(), s.rmass.data(), inverse_masses ? s.inverse.data() : nullptr,
-                  s.omega.data()};
+  vp::Atoms atoms{
+      s.x.data(),    s.v.data(), s.radius.data(), s.rmass.data(), inverse_masses ? s.inverse.data() : nullptr,
+      s.omega.data()};
   std::vector<double> out(20 * pairs);
   auto col = [&](int k) { return out.data() + k * pairs; };
   const vp::FrictionOut o{col(0),  col(1),  col(2),  col(3),  col(4),  col(5),  col(6),  col(7),  col(8),  col(9),
                           col(10), col(11), col(12), col(13), col(14), col(15), col(16), col(17), col(18), col(19)};
-  const vp::FrictionIn in{s.pair_i.data(), s.pair_j.data(), s.touched.data(),
+  const vp::FrictionIn in{s.pair_i.data(),  s.pair_j.data(),  s.touched.data(),
                           s.delta_x.data(), s.delta_y.data(), s.delta_z.data()};
   if (inverse_masses)
     vp::friction_contacts_by_inverse(atoms, model, in, pairs, o);
@@ -104,8 +108,8 @@ void check_model(const Coefficients &c, bool inverse_masses, unsigned seed, int 
     p.n = {delx * rinv, dely * rinv, delz * rinv};
     p.dv = {s.v[3 * i] - s.v[3 * j], s.v[3 * i + 1] - s.v[3 * j + 1], s.v[3 * i + 2] - s.v[3 * j + 2]};
     p.u_n = dot(p.dv, p.n);
-    p.reduced_mass = inverse_masses ? reduced_mass_of_inverses(s.inverse[i], s.inverse[j])
-                                    : reduced_mass(s.rmass[i], s.rmass[j]);
+    p.reduced_mass =
+        inverse_masses ? reduced_mass_of_inverses(s.inverse[i], s.inverse[j]) : reduced_mass(s.rmass[i], s.rmass[j]);
     p.omega_i = {s.omega[3 * i], s.omega[3 * i + 1], s.omega[3 * i + 2]};
     p.omega_j = {s.omega[3 * j], s.omega[3 * j + 1], s.omega[3 * j + 2]};
     p.radius_i = s.radius[i], p.radius_j = s.radius[j];
@@ -117,7 +121,8 @@ void check_model(const Coefficients &c, bool inverse_masses, unsigned seed, int 
     ASSERT_EQ(col(19)[k] != 0.0, takes) << "pair " << k;
     if (!takes) {    // left to the general loop: nothing applied, the history as it was
       ++left_count;
-      for (int q : {0, 1, 3, 4, 5, 6, 7, 8, 9}) ASSERT_EQ(col(q)[k], 0.0) << q;
+      for (int q : {0, 1, 3, 4, 5, 6, 7, 8, 9})
+        ASSERT_EQ(col(q)[k], 0.0) << q;
       ASSERT_EQ(col(15)[k], s.delta_x[k]);
       ASSERT_EQ(col(18)[k], s.touched[k]);
       continue;
@@ -127,12 +132,11 @@ void check_model(const Coefficients &c, bool inverse_masses, unsigned seed, int 
     HistorySlot slot{h, s.touched[k] != 0.0, true};
     const ContactForces f = contact_forces<true>(model, p, slot, Evaluation::step);
     // Scales: the largest force of the pair, the elongation's length.
-    const double force_scale = std::max({std::fabs(f.normal.total()), std::fabs(f.normal.contact),
-                                         std::sqrt(dot(f.tangential, f.tangential)), 1e-300});
-    const double length_scale = std::max({std::sqrt(dot(Vec3{h[0], h[1], h[2]}, Vec3{h[0], h[1], h[2]})),
-                                          std::sqrt(s.delta_x[k] * s.delta_x[k] + s.delta_y[k] * s.delta_y[k] +
-                                                    s.delta_z[k] * s.delta_z[k]),
-                                          1e-300});
+    const double force_scale = std::max(
+        {std::fabs(f.normal.total()), std::fabs(f.normal.contact), std::sqrt(dot(f.tangential, f.tangential)), 1e-300});
+    const double length_scale = std::max(
+        {std::sqrt(dot(Vec3{h[0], h[1], h[2]}, Vec3{h[0], h[1], h[2]})),
+         std::sqrt(s.delta_x[k] * s.delta_x[k] + s.delta_y[k] * s.delta_y[k] + s.delta_z[k] * s.delta_z[k]), 1e-300});
     // The film apart is a difference of the film integral at two gaps: its rounding is relative to
     // the integral's size (test_vector_forms.cpp), here up to 1e-10 of the force.
     expect_close(col(0)[k] * r, f.normal.total(), 1e2 * force_scale, "normal force", k);
