@@ -248,10 +248,11 @@ friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const 
     slip_sq[c] = sx * sx + sy * sy + sz * sz;
     tangential_mass[c] = ok ? m_t : 1.0;
     // Apart: a touching contact's elongation forgotten; else (not done) as it was.
-    const bool forget = ok & (touched[c] != 0.0), spring = in_contact != 0.0;
-    new_x[c] = spring ? dx : forget ? 0.0 : delta_x[c];
-    new_y[c] = spring ? dy : forget ? 0.0 : delta_y[c];
-    new_z[c] = spring ? dz : forget ? 0.0 : delta_z[c];
+    // (touched and on are 0 or 1: a product, as bool masks here stop GCC 12 vectorising.)
+    const double kept = 1.0 - on * touched[c];
+    new_x[c] = in_contact != 0.0 ? dx : kept * delta_x[c];
+    new_y[c] = in_contact != 0.0 ? dy : kept * delta_y[c];
+    new_z[c] = in_contact != 0.0 ? dz : kept * delta_z[c];
     new_touched[c] = ok ? in_contact : touched[c];
     done[c] = on;
   }
