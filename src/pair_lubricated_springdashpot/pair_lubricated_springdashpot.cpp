@@ -213,8 +213,8 @@ void PairLubricatedSpringDashpot::init_style()
   // type pairs with other coefficients are grouped by type pair (vector_forces).
   vector_loops = vector_enabled && !any_tangential && !midpoint;
   // With friction or rolling, the pairs apart over a step feel the normal and shear films
-  // alone: they take a vectorised film loop too.
-  film_loops = vector_enabled && any_tangential && any_wet && !midpoint;
+  // alone: they take a vectorised film loop too; and the sustained frictional contacts theirs.
+  film_loops = vector_enabled && any_tangential && !midpoint;
   uniform_models = true;
   double first[lub::Coefficients::packed_size], other[lub::Coefficients::packed_size];
   coeffs[index(1, 1)].pack(first);
@@ -229,8 +229,10 @@ void PairLubricatedSpringDashpot::init_style()
   if (vector_loops && comm->me == 0)
     utils::logmesg(lmp, "{}: pairs in sustained contact{} take vectorised loops\n", STYLE,
                    any_wet ? " and pairs apart over a step" : "");
-  if (film_loops && comm->me == 0)
+  if (film_loops && any_wet && comm->me == 0)
     utils::logmesg(lmp, "{}: pairs apart over a step take the vectorised film loop\n", STYLE);
+  if (film_loops && history && comm->me == 0)
+    utils::logmesg(lmp, "{}: pairs in sustained frictional contact take a vectorised loop\n", STYLE);
 
   // The many-body film budget covers the films of these pairs and of the wet walls.
   walls.clear();
@@ -361,7 +363,7 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
     if (any_wet)
       film_loops && (!update->setupflag || continued) ? eval<true, true, true>() : eval<true, true>();
     else
-      eval<false, true>();
+      film_loops && (!update->setupflag || continued) ? eval<false, true, true>() : eval<false, true>();
   } else {
     // The vectorised loops for steps (a run's set-up evaluates with full-step velocities, unless
     // it continues the last run's steps).

@@ -71,7 +71,9 @@ class PairLubricatedSpringDashpot : public Pair {
   bool vector_enabled = true;
   bool uniform_models = true;
   bool vector_loops = false;
-  bool film_loops = false;    // friction or rolling: the film-only pairs vectorised (normal and shear film)
+  // Friction or rolling: the film-only pairs vectorised (normal and shear film), and the pairs in
+  // sustained contact with friction (not rolling) that touched at the last step.
+  bool film_loops = false;
   std::vector<int> film_i, film_j;
   std::vector<int> group_count, group_keys;    // grouping a chunk by type pair
 

@@ -143,6 +143,121 @@ film_shear_only_loop(const Atoms &atoms, const lub::ContactModel &model, const i
   }
 }
 
+// Kept pairs with friction (lubricated/contact.h, contact_forces<true> over a step) of two kinds:
+// in sustained contact (overlap now, a step ago and a step ahead, as contact_or_film decides) that
+// touched at the last step: the normal contact and its saturated film (sustained_contact_force),
+// the tangential spring with its rotation into the tangent plane and the Coulomb cap with the
+// sliding reset (tangential_contact_force), the shear film (SHEAR, saturated); and apart over the
+// step (no contact can act): the films alone (film_force_apart, the shear film as in
+// film_shear_only) and the elongation forgotten. Every branch of the scalar kernel a select here
+// (-fno-trapping-math: a lane's unused division may be 0/0), in the scalar kernel's order of
+// operations; 0/1 multipliers, not bool masks, where GCC 12 would not if-convert.
+template <bool WET, bool GRID, bool SHEAR, bool INVERSE> __attribute__((always_inline)) static inline void
+friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const int *__restrict pair_i,
+                      const int *__restrict pair_j, const double *__restrict touched, const double *__restrict delta_x,
+                      const double *__restrict delta_y, const double *__restrict delta_z, int n,
+                      double *__restrict fpair, double *__restrict film_force, double *__restrict capacity,
+                      double *__restrict energy, double *__restrict force_x, double *__restrict force_y,
+                      double *__restrict force_z, double *__restrict torque_x, double *__restrict torque_y,
+                      double *__restrict torque_z, double *__restrict shear_x, double *__restrict shear_y,
+                      double *__restrict shear_z, double *__restrict slip_sq, double *__restrict tangential_mass,
+                      double *__restrict new_x, double *__restrict new_y, double *__restrict new_z,
+                      double *__restrict new_touched, double *__restrict done)
+{
+  const Atoms local = atoms;
+  const lub::NormalModel normal = model.normal;
+  const lub::TangentialModel tm = model.tangential;
+  const double *__restrict omega = local.omega;
+  const double *__restrict v = local.v;
+  const double dt = normal.step.dt, inv_dt = normal.step.inv_dt;
+  const double eps_1 = normal.lubrication.eps_saturation, eps_2 = normal.lubrication.eps_release;
+  const double dx_al = lub::Lubrication::grid_activation * normal.lubrication.grid_spacing;
+  for (int c = 0; c < n; c++) {
+    const int i = pair_i[c], j = pair_j[c];
+    const Geometry g = geometry<INVERSE>(local, i, j);
+    const double gap = g.r - g.radsum;
+    bool sustained;
+    // Dry: the film terms are 0 (six_pi_mu = 0).
+    const lub::NormalForce fn = lub::sustained_contact_force<GRID>(normal, gap, g.film, g.m_e, g.u_n, sustained);
+    const bool apart = !lub::contact_possible(gap, g.u_n, dt);
+    const double film_apart =
+        WET ? lub::film_force_apart<GRID>(normal.lubrication, gap, g.film, g.m_e, g.u_n, dt, inv_dt) : 0.0;
+    const bool stick = sustained & (touched[c] != 0.0);
+    // Whether the lane is done here, as doubles (a pair of immovable atoms, m_e = 0, is not: the
+    // general loop drops it); m_e > 0 in a bool mask stops GCC 12 with inverse masses.
+    const double on = ((stick | apart) & (g.r > 0.0) ? 1.0 : 0.0) * (g.m_e > 0.0 ? 1.0 : 0.0);
+    const double in_contact = stick ? on : 0.0;
+    const bool ok = on != 0.0;
+    // The slip (lubricated/tangential.h): (v_i - v_j) - (R_i w_i + R_j w_j) x n, its normal part removed.
+    const double radi = local.radius[i], radj = local.radius[j];
+    const double nx = g.delx * g.rinv, ny = g.dely * g.rinv, nz = g.delz * g.rinv;
+    const double lx = radi * omega[3 * i] + radj * omega[3 * j];
+    const double ly = radi * omega[3 * i + 1] + radj * omega[3 * j + 1];
+    const double lz = radi * omega[3 * i + 2] + radj * omega[3 * j + 2];
+    const double ax = v[3 * i] - v[3 * j] - (ly * nz - lz * ny);
+    const double ay = v[3 * i + 1] - v[3 * j + 1] - (lz * nx - lx * nz);
+    const double az = v[3 * i + 2] - v[3 * j + 2] - (lx * ny - ly * nx);
+    const double along = ax * nx + ay * ny + az * nz;
+    const double sx = ax - nx * along, sy = ay - ny * along, sz = az - nz * along;
+    const double m_t = lub::tangential_mass_ratio * g.m_e;
+    // The elongation kept in the tangent plane with its length (series or square root).
+    double dx = delta_x[c], dy = delta_y[c], dz = delta_z[c];
+    const double normal_part = dx * nx + dy * ny + dz * nz;
+    const double length_sq = dx * dx + dy * dy + dz * dz;
+    dx = dx - nx * normal_part, dy = dy - ny * normal_part, dz = dz - nz * normal_part;
+    const double x = normal_part != 0.0 ? normal_part * normal_part / length_sq : 0.0;
+    const double stretch = x < 1e-4 ? 1.0 + x * (0.5 + 0.375 * x) : x < 1.0 ? std::sqrt(1.0 / (1.0 - x)) : 1.0;
+    const double step = 1.0 * tm.dt;    // a sustained contact: the whole last step in overlap
+    dx = dx * stretch + sx * step, dy = dy * stretch + sy * step, dz = dz * stretch + sz * step;
+    double fx = (dx * tm.stiffness_step + sx * tm.damping_step) * -m_t;
+    double fy = (dy * tm.stiffness_step + sy * tm.damping_step) * -m_t;
+    double fz = (dz * tm.stiffness_step + sz * tm.damping_step) * -m_t;
+    // Coulomb: beyond mu |F_n| the contact slides and the spring holds what the capped force implies.
+    const double limit = tm.friction * std::fabs(fn.contact);
+    const double f2 = fx * fx + fy * fy + fz * fz;
+    const bool slides = f2 > limit * limit;
+    const double cap = slides ? limit / std::sqrt(f2) : 1.0;
+    fx *= cap, fy *= cap, fz *= cap;
+    const double inv_m_t = 1.0 / m_t, inv_k = -1.0 / tm.stiffness_step;
+    dx = slides ? (fx * inv_m_t + sx * tm.damping_step) * inv_k : dx;
+    dy = slides ? (fy * inv_m_t + sy * tm.damping_step) * inv_k : dy;
+    dz = slides ? (fz * inv_m_t + sz * tm.damping_step) * inv_k : dz;
+    fx *= in_contact, fy *= in_contact, fz *= in_contact;    // apart: no spring
+    double hx = 0.0, hy = 0.0, hz = 0.0;
+    if (SHEAR) {
+      // 2 pi mu R_e ln(eps_al / max(eps, eps_1)) between eps_2 and eps_al (saturated in overlap).
+      const double eps = gap / g.film.value;
+      const double eps_al = GRID ? std::max(dx_al * (1.0 / g.film.value), eps_1) : normal.lubrication.eps_activation;
+      const double in_film = (eps < eps_al) & (eps > eps_2) ? on : 0.0;
+      const double mass = ok ? m_t : 1.0;
+      const double rate = in_film * tm.two_pi_mu * (radi * radj / g.radsum) *
+                          lub::log_inline(eps_al / std::max(eps, eps_1)) * tm.dt / mass;
+      const double damping = lub::one_minus_exp_neg_inline(rate) * mass / tm.dt;
+      hx = -damping * sx, hy = -damping * sy, hz = -damping * sz;
+      fx += hx, fy += hy, fz += hz;
+    }
+    const double normal_total = stick ? fn.total() : film_apart;
+    fpair[c] = on * normal_total * g.rinv;
+    film_force[c] = on * (stick ? fn.lubrication : film_apart);
+    capacity[c] = lub::film_capacity(g.m_e, g.u_n);
+    energy[c] = in_contact * fn.energy;
+    force_x[c] = fx, force_y[c] = fy, force_z[c] = fz;
+    // -n x F: the torque on i per unit of R_i (on j per unit of R_j).
+    torque_x[c] = -(ny * fz - nz * fy), torque_y[c] = -(nz * fx - nx * fz), torque_z[c] = -(nx * fy - ny * fx);
+    shear_x[c] = hx, shear_y[c] = hy, shear_z[c] = hz;
+    slip_sq[c] = sx * sx + sy * sy + sz * sz;
+    tangential_mass[c] = ok ? m_t : 1.0;
+    // Apart: a touching contact's elongation forgotten; else (not done) as it was.
+    // (touched and on are 0 or 1: a product, as bool masks here stop GCC 12 vectorising.)
+    const double kept = 1.0 - on * touched[c];
+    new_x[c] = in_contact != 0.0 ? dx : kept * delta_x[c];
+    new_y[c] = in_contact != 0.0 ? dy : kept * delta_y[c];
+    new_z[c] = in_contact != 0.0 ? dz : kept * delta_z[c];
+    new_touched[c] = ok ? in_contact : touched[c];
+    done[c] = on;
+  }
+}
+
 // Each entry point compiles its own loops (the plain ones exactly as without contact masses).
 VECTOR_PAIRS_CLONES
 void film_only(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n,
@@ -212,6 +327,48 @@ void film_shear_only_by_inverse(const Atoms &atoms, const lub::ContactModel &mod
     film_shear_only_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, SHEAR_OUTPUTS(shear));
   else
     film_shear_only_loop<false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, SHEAR_OUTPUTS(shear));
+}
+
+#define CONTACT_ARGUMENTS(o)                                                                                           \
+  o.fpair, o.film, o.capacity, o.energy, o.force_x, o.force_y, o.force_z, o.torque_x, o.torque_y, o.torque_z,          \
+      o.shear_x, o.shear_y, o.shear_z, o.slip_sq, o.tangential_mass, o.new_x, o.new_y, o.new_z, o.new_touched, o.done
+
+// One entry point per mass form; the model picks the loop (dry; wet with or without a grid and a
+// shear film).
+template <bool INVERSE> __attribute__((always_inline)) static inline void
+friction_contacts_of(const Atoms &atoms, const lub::ContactModel &model, const FrictionIn &in, int n,
+                     const FrictionOut &out)
+{
+  const lub::Lubrication &film = model.normal.lubrication;
+  const bool wet = film.active(), grid = film.grid_spacing > 0.0, shear = model.tangential.film_active();
+#define FRICTION_LOOP(W, G, S)                                                                                         \
+  friction_contact_loop<W, G, S, INVERSE>(atoms, model, in.pair_i, in.pair_j, in.touched, in.delta_x, in.delta_y,      \
+                                          in.delta_z, n, CONTACT_ARGUMENTS(out))
+  if (!wet)
+    FRICTION_LOOP(false, false, false);
+  else if (grid && shear)
+    FRICTION_LOOP(true, true, true);
+  else if (grid)
+    FRICTION_LOOP(true, true, false);
+  else if (shear)
+    FRICTION_LOOP(true, false, true);
+  else
+    FRICTION_LOOP(true, false, false);
+#undef FRICTION_LOOP
+}
+
+VECTOR_PAIRS_CLONES
+void friction_contacts(const Atoms &atoms, const lub::ContactModel &model, const FrictionIn &in, int n,
+                       const FrictionOut &out)
+{
+  friction_contacts_of<false>(atoms, model, in, n, out);
+}
+
+VECTOR_PAIRS_CLONES
+void friction_contacts_by_inverse(const Atoms &atoms, const lub::ContactModel &model, const FrictionIn &in, int n,
+                                  const FrictionOut &out)
+{
+  friction_contacts_of<true>(atoms, model, in, n, out);
 }
 
 }    // namespace vector_pairs

@@ -1,0 +1,257 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   pair_style lubricated/springdashpot: the second pass's vectorised loops (vector_pairs.h), their
+   gathers and scatters; included by pair_lubricated_springdashpot_eval.cpp alone (a template of
+   the pair loop's general evaluation)
+------------------------------------------------------------------------- */
+
+#ifndef LMP_LUBRICATED_VECTOR_FORCES_H
+#define LMP_LUBRICATED_VECTOR_FORCES_H
+
+#include "pair_lubricated_springdashpot.h"
+#include "vector_pairs.h"
+
+#include "fix_contact_history/fix_contact_history.h"
+#include "lubricated/film_budget.h"
+
+#include "atom.h"
+#include "force.h"
+#include "update.h"
+
+#include <algorithm>
+
+namespace LAMMPS_NS {
+
+// The vectorised loops (vector_pairs.h) over the film-only list and the kept entries, in
+// chunks that stay in the cache between computing and applying the forces; kept entries
+// where a contact starts or ends go through the general loop, evaluate(i, j, jj). Unless one
+// model serves every pair, each chunk is first grouped by type pair (a counting sort).
+// TANGENTIAL (friction or rolling, and maybe a shear film): the film-only list with the shear
+// film, and the kept entries of type pairs with friction and without rolling resistance through
+// the sustained frictional contact loop (the others, and those not in sustained contact or new,
+// through the general loop). In steps only (the elongation advances).
+template <bool TANGENTIAL, class Evaluate> void
+PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v, double **omega, Evaluate &evaluate)
+{
+  if (ncandidate + nfilm == 0) return;
+  double **x = atom->x, **f = atom->f;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+  const vector_pairs::Atoms atoms{x[0],
+                                  v[0],
+                                  atom->radius,
+                                  atom->rmass,
+                                  inverse_mass_on ? inverse_mass.data() : nullptr,
+                                  TANGENTIAL ? omega[0] : nullptr};
+  constexpr int chunk = 256;
+  double fpair[chunk], energy[chunk], film[chunk], capacity[chunk];
+  int done[chunk], rest[chunk];
+  const bool budget = film_budget_now;
+  auto apply = [&](int i, int j, double fij, double eij) {
+    const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+    f[i][0] += delx * fij;
+    f[i][1] += dely * fij;
+    f[i][2] += delz * fij;
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= delx * fij;
+      f[j][1] -= dely * fij;
+      f[j][2] -= delz * fij;
+    }
+    if (evflag) ev_tally(i, j, nlocal, newton_pair, eij, 0.0, fij, delx, dely, delz);
+  };
+  // The loops' films enter the budget (their kick is a step: the loops run in steps only): the
+  // shares in a loop of their own (vectorised), the rest with the forces' scatter.
+  const double dt = update->dt;
+  auto record_films = [&](const int *pair_i, const int *pair_j, int n) {
+    for (int c = 0; c < n; c++)
+      capacity[c] = lubricated::film_share_of_capacity(film[c], capacity[c], dt);
+    for (int c = 0; c < n; c++)
+      record_film(pair_i[c], pair_j[c], film[c], capacity[c], nlocal, newton_pair);
+  };
+  // At most one chunk of pairs of one model.
+  auto film_pairs = [&](const lubricated::ContactModel &contact_model, const int *pair_i, const int *pair_j,
+                        const int * /*pair_jj*/, int n) {
+    const lubricated::NormalModel &model = contact_model.normal;
+    if (atoms.inverse_mass)
+      vector_pairs::film_only_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+    else
+      vector_pairs::film_only(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+    for (int c = 0; c < n; c++)
+      apply(pair_i[c], pair_j[c], fpair[c], 0.0);
+    if (budget) record_films(pair_i, pair_j, n);
+  };
+  // The same with the shear film (friction or rolling: a shear film may act apart).
+  double shear[6][chunk], slip_sq[chunk], tangential_mass[chunk];
+  const vector_pairs::ShearOut shear_out{shear[0], shear[1], shear[2], shear[3],
+                                         shear[4], shear[5], slip_sq,  tangential_mass};
+  double **torque = atom->torque;
+  const double *radius = atom->radius;
+  auto film_shear_pairs = [&](const lubricated::ContactModel &model, const int *pair_i, const int *pair_j,
+                              const int * /*pair_jj*/, int n) {
+    if (atoms.inverse_mass)
+      vector_pairs::film_shear_only_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity, shear_out);
+    else
+      vector_pairs::film_shear_only(atoms, model, pair_i, pair_j, n, fpair, film, capacity, shear_out);
+    for (int c = 0; c < n; c++) {
+      const int i = pair_i[c], j = pair_j[c];
+      const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+      const double fx = delx * fpair[c] + shear[0][c], fy = dely * fpair[c] + shear[1][c],
+                   fz = delz * fpair[c] + shear[2][c];
+      f[i][0] += fx, f[i][1] += fy, f[i][2] += fz;
+      torque[i][0] += radius[i] * shear[3][c], torque[i][1] += radius[i] * shear[4][c],
+          torque[i][2] += radius[i] * shear[5][c];
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= fx, f[j][1] -= fy, f[j][2] -= fz;
+        torque[j][0] += radius[j] * shear[3][c], torque[j][1] += radius[j] * shear[4][c],
+            torque[j][2] += radius[j] * shear[5][c];
+      }
+      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+    }
+    if (!budget) return;
+    for (int c = 0; c < n; c++) {
+      const double share = lubricated::film_share_of_capacity(film[c], capacity[c], dt);
+      if (!shear_records) {
+        record_film(pair_i[c], pair_j[c], film[c], share, nlocal, newton_pair);
+        continue;
+      }
+      const lubricated::Vec3 force{shear[0][c], shear[1][c], shear[2][c]};
+      const double shear_share =
+          lubricated::shear_film_share(lubricated::dot(force, force), slip_sq[c], tangential_mass[c], dt);
+      this->record_films(pair_i[c], pair_j[c], film[c], force, lubricated::contact_film_share(share, shear_share),
+                         nlocal, newton_pair);
+    }
+  };
+  // Sustained frictional contacts (TANGENTIAL): the elongations gathered, the whole contact
+  // vectorised, forces, torques and elongations scattered; the rest through the general loop.
+  double touched[chunk], delta[3][chunk], next[3][chunk], next_touched[chunk], force[3][chunk], torque_unit[3][chunk],
+      on[chunk];
+  const vector_pairs::FrictionOut friction_out{fpair,    film,     capacity,       energy,         force[0],
+                                               force[1], force[2], torque_unit[0], torque_unit[1], torque_unit[2],
+                                               shear[0], shear[1], shear[2],       slip_sq,        tangential_mass,
+                                               next[0],  next[1],  next[2],        next_touched,   on};
+  auto friction_pairs = [&](const lubricated::ContactModel &model, const int *pair_i, const int *pair_j,
+                            const int *pair_jj, int n) {
+    const lubricated::TangentialModel &tm = model.tangential;
+    if (!history || !tm.contact_active() || tm.rolling_active()) {
+      for (int c = 0; c < n; c++)
+        evaluate(pair_i[c], pair_j[c], pair_jj[c]);
+      return;
+    }
+    for (int c = 0; c < n; c++) {
+      const double *h = history->values(pair_i[c]) + 3 * pair_jj[c];
+      delta[0][c] = h[0], delta[1][c] = h[1], delta[2][c] = h[2];
+      touched[c] = history->touched(pair_i[c])[pair_jj[c]] ? 1.0 : 0.0;
+    }
+    const vector_pairs::FrictionIn in{pair_i, pair_j, touched, delta[0], delta[1], delta[2]};
+    if (atoms.inverse_mass)
+      vector_pairs::friction_contacts_by_inverse(atoms, model, in, n, friction_out);
+    else
+      vector_pairs::friction_contacts(atoms, model, in, n, friction_out);
+    int nrest = 0;
+    for (int c = 0; c < n; c++) {
+      // Branch-free: the pairs not done have zero forces and their history unchanged here.
+      const int i = pair_i[c], j = pair_j[c];
+      const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+      const double fx = delx * fpair[c] + force[0][c], fy = dely * fpair[c] + force[1][c],
+                   fz = delz * fpair[c] + force[2][c];
+      f[i][0] += fx, f[i][1] += fy, f[i][2] += fz;
+      torque[i][0] += radius[i] * torque_unit[0][c], torque[i][1] += radius[i] * torque_unit[1][c],
+          torque[i][2] += radius[i] * torque_unit[2][c];
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= fx, f[j][1] -= fy, f[j][2] -= fz;
+        torque[j][0] += radius[j] * torque_unit[0][c], torque[j][1] += radius[j] * torque_unit[1][c],
+            torque[j][2] += radius[j] * torque_unit[2][c];
+      }
+      double *h = history->values(i) + 3 * pair_jj[c];
+      h[0] = next[0][c], h[1] = next[1][c], h[2] = next[2][c];
+      history->touched(i)[pair_jj[c]] = next_touched[c] != 0.0;
+      if (evflag && on[c] != 0.0) ev_tally_xyz(i, j, nlocal, newton_pair, energy[c], 0.0, fx, fy, fz, delx, dely, delz);
+      rest[nrest] = c;
+      nrest += on[c] == 0.0;
+    }
+    // The films' budget records (the pairs not done have no film: no record).
+    if (budget && model.normal.lubrication.active())
+      for (int c = 0; c < n; c++) {
+        const double share = lubricated::film_share_of_capacity(film[c], capacity[c], dt);
+        if (!shear_records) {
+          record_film(pair_i[c], pair_j[c], film[c], share, nlocal, newton_pair);
+          continue;
+        }
+        const lubricated::Vec3 shear_force{shear[0][c], shear[1][c], shear[2][c]};
+        const double shear_share =
+            lubricated::shear_film_share(lubricated::dot(shear_force, shear_force), slip_sq[c], tangential_mass[c], dt);
+        this->record_films(pair_i[c], pair_j[c], film[c], shear_force,
+                           lubricated::contact_film_share(share, shear_share), nlocal, newton_pair);
+      }
+    for (int k = 0; k < nrest; k++)
+      evaluate(pair_i[rest[k]], pair_j[rest[k]], pair_jj[rest[k]]);
+  };
+  auto kept_pairs = [&](const lubricated::ContactModel &contact_model, const int *pair_i, const int *pair_j,
+                        const int * /*pair_jj*/, int n) {
+    const lubricated::NormalModel &model = contact_model.normal;
+    if (atoms.inverse_mass)
+      vector_pairs::contact_or_film_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+    else
+      vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+    int nrest = 0;
+    for (int c = 0; c < n; c++) {
+      // Branch-free (which pairs are done follows no pattern): the others have fpair = 0 (and
+      // no film) here and are listed for the general loop.
+      apply(pair_i[c], pair_j[c], fpair[c], energy[c]);
+      rest[nrest] = c;
+      nrest += !done[c];
+    }
+    if (budget && model.lubrication.active()) record_films(pair_i, pair_j, n);
+    for (int k = 0; k < nrest; k++)
+      evaluate(pair_i[rest[k]], pair_j[rest[k]], 0);
+  };
+  // A list in chunks, each grouped by type pair (a counting sort within the chunk, which
+  // keeps the atoms' data in the cache) unless one model serves all.
+  // list_jj (the history's list entries, with friction) is grouped with the pairs where given.
+  int key[chunk], grouped_i[chunk], grouped_j[chunk], grouped_jj[chunk];
+  group_count.resize(models.size(), 0);    // all zero between chunks
+  auto run_list = [&](const int *list_i, const int *list_j, const int *list_jj, int count, auto &pairs) {
+    for (int start = 0; start < count; start += chunk) {
+      const int n = std::min(chunk, count - start);
+      const int *pair_i = list_i + start, *pair_j = list_j + start;
+      const int *pair_jj = list_jj ? list_jj + start : nullptr;
+      if (uniform_models) {
+        pairs(models[index(1, 1)], pair_i, pair_j, pair_jj, n);
+        continue;
+      }
+      group_keys.clear();
+      for (int c = 0; c < n; c++) {
+        key[c] = index(type[pair_i[c]], type[pair_j[c]]);
+        if (group_count[key[c]]++ == 0) group_keys.push_back(key[c]);
+      }
+      int begin = 0;
+      for (int k : group_keys) {    // group_count becomes each group's next free slot
+        const int size = group_count[k];
+        group_count[k] = begin;
+        begin += size;
+      }
+      for (int c = 0; c < n; c++) {
+        const int at = group_count[key[c]]++;
+        grouped_i[at] = pair_i[c];
+        grouped_j[at] = pair_j[c];
+        if (pair_jj) grouped_jj[at] = pair_jj[c];
+      }
+      begin = 0;
+      for (int k : group_keys) {
+        pairs(models[k], grouped_i + begin, grouped_j + begin, grouped_jj + begin, group_count[k] - begin);
+        begin = group_count[k];
+        group_count[k] = 0;
+      }
+    }
+  };
+  if (TANGENTIAL) {
+    run_list(film_i.data(), film_j.data(), nullptr, nfilm, film_shear_pairs);
+    run_list(candidate_i.data(), candidate_j.data(), candidate_jj.data(), ncandidate, friction_pairs);
+    return;
+  }
+  run_list(film_i.data(), film_j.data(), nullptr, nfilm, film_pairs);
+  run_list(candidate_i.data(), candidate_j.data(), nullptr, ncandidate, kept_pairs);
+}
+
+}    // namespace LAMMPS_NS
+
+#endif
