@@ -17,7 +17,7 @@ import pytest
 
 from basset_closed_form import released_from_rest
 from scene_chain import dump_state
-from test_fluid_forces import basset_problem, scene
+from test_fluid_forces import basset_problem, scene, schiller_naumann_terminal
 
 RHO_F, MU = 1000.0, 0.89e-3
 MORDANT = {    # d [m], rho_p [kg/m^3], v_inf [m/s], tau_95 [s]
@@ -27,16 +27,6 @@ MORDANT = {    # d [m], rho_p [kg/m^3], v_inf [m/s], tau_95 [s]
 }
 
 
-def schiller_naumann_terminal(d, rho_p):
-    weight = (rho_p - RHO_F) * math.pi / 6 * d ** 3 * 9.81
-    lo, hi = 0.0, weight / (3 * math.pi * MU * d)
-    for _ in range(200):
-        w = 0.5 * (lo + hi)
-        re = RHO_F * w * d / MU
-        (lo, hi) = (w, hi) if 3 * math.pi * MU * d * w * (1 + 0.15 * re ** 0.687) < weight else (lo, w)
-    return 0.5 * (lo + hi)
-
-
 def settle(lmp, case, extra, n=150, periods=3):
     """Velocities every step of a sphere released from rest, n steps per tau_95, and the time
     to 95 % of the drag law's terminal speed (linear interpolation between steps)."""
@@ -44,7 +34,7 @@ def settle(lmp, case, extra, n=150, periods=3):
     dt, steps = tau95 / n, periods * n
     result = lmp(scene(rho_p, "added_mass 0.5 " + extra, dt, steps, 1, d=d, mu=MU, law="schiller-naumann"))
     speeds = [0.0] + [result[f"v{k}"] for k in range(1, steps + 1)]
-    terminal = schiller_naumann_terminal(d, rho_p)
+    terminal = schiller_naumann_terminal(d, rho_p, MU)
     t95 = math.inf
     for k in range(1, steps + 1):
         if speeds[k] >= 0.95 * terminal:
