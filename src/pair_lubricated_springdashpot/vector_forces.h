@@ -85,40 +85,47 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
                                          shear[4], shear[5], slip_sq,  tangential_mass};
   double **torque = atom->torque;
   const double *radius = atom->radius;
-  auto film_shear_pairs = [&](const lubricated::ContactModel &model, const int *pair_i, const int *pair_j,
-                              const int * /*pair_jj*/, int n) {
-    if (atoms.inverse_mass)
-      vector_pairs::film_shear_only_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity, shear_out);
-    else
-      vector_pairs::film_shear_only(atoms, model, pair_i, pair_j, n, fpair, film, capacity, shear_out);
-    for (int c = 0; c < n; c++) {
-      const int i = pair_i[c], j = pair_j[c];
-      const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
-      const double fx = delx * fpair[c] + shear[0][c], fy = dely * fpair[c] + shear[1][c],
-                   fz = delz * fpair[c] + shear[2][c];
-      f[i][0] += fx, f[i][1] += fy, f[i][2] += fz;
-      torque[i][0] += radius[i] * shear[3][c], torque[i][1] += radius[i] * shear[4][c],
-          torque[i][2] += radius[i] * shear[5][c];
-      if (newton_pair || j < nlocal) {
-        f[j][0] -= fx, f[j][1] -= fy, f[j][2] -= fz;
-        torque[j][0] += radius[j] * shear[3][c], torque[j][1] += radius[j] * shear[4][c],
-            torque[j][2] += radius[j] * shear[5][c];
-      }
-      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+  // A pair's force: fij (x_i - x_j) plus the tangential force (tx, ty, tz) on i, the opposite on
+  // j; the torque (ux, uy, uz) per unit radius on both; tallied (with energy eij) unless tallied = 0.
+  auto apply_tangential = [&](int i, int j, double fij, double tx, double ty, double tz, double ux, double uy,
+                              double uz, double eij, double tallied) __attribute__((always_inline))
+  {
+    const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+    const double fx = delx * fij + tx, fy = dely * fij + ty, fz = delz * fij + tz;
+    f[i][0] += fx, f[i][1] += fy, f[i][2] += fz;
+    torque[i][0] += radius[i] * ux, torque[i][1] += radius[i] * uy, torque[i][2] += radius[i] * uz;
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= fx, f[j][1] -= fy, f[j][2] -= fz;
+      torque[j][0] += radius[j] * ux, torque[j][1] += radius[j] * uy, torque[j][2] += radius[j] * uz;
     }
-    if (!budget) return;
+    if (evflag && tallied != 0.0) ev_tally_xyz(i, j, nlocal, newton_pair, eij, 0.0, fx, fy, fz, delx, dely, delz);
+  };
+  // The budget's records of the normal films, and with shear_records the shear films (shear,
+  // slip_sq, tangential_mass), of a chunk; the contact's share the larger of the two.
+  auto record_normal_and_shear_films = [&](const int *pair_i, const int *pair_j, int n) {
     for (int c = 0; c < n; c++) {
       const double share = lubricated::film_share_of_capacity(film[c], capacity[c], dt);
       if (!shear_records) {
         record_film(pair_i[c], pair_j[c], film[c], share, nlocal, newton_pair);
         continue;
       }
-      const lubricated::Vec3 force{shear[0][c], shear[1][c], shear[2][c]};
+      const lubricated::Vec3 shear_force{shear[0][c], shear[1][c], shear[2][c]};
       const double shear_share =
-          lubricated::shear_film_share(lubricated::dot(force, force), slip_sq[c], tangential_mass[c], dt);
-      this->record_films(pair_i[c], pair_j[c], film[c], force, lubricated::contact_film_share(share, shear_share),
+          lubricated::shear_film_share(lubricated::dot(shear_force, shear_force), slip_sq[c], tangential_mass[c], dt);
+      this->record_films(pair_i[c], pair_j[c], film[c], shear_force, lubricated::contact_film_share(share, shear_share),
                          nlocal, newton_pair);
     }
+  };
+  auto film_shear_pairs = [&](const lubricated::ContactModel &model, const int *pair_i, const int *pair_j,
+                              const int * /*pair_jj*/, int n) {
+    if (atoms.inverse_mass)
+      vector_pairs::film_shear_only_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity, shear_out);
+    else
+      vector_pairs::film_shear_only(atoms, model, pair_i, pair_j, n, fpair, film, capacity, shear_out);
+    for (int c = 0; c < n; c++)
+      apply_tangential(pair_i[c], pair_j[c], fpair[c], shear[0][c], shear[1][c], shear[2][c], shear[3][c], shear[4][c],
+                       shear[5][c], 0.0, evflag);
+    if (budget) record_normal_and_shear_films(pair_i, pair_j, n);
   };
   // Sustained frictional contacts (TANGENTIAL): the elongations gathered, the whole contact
   // vectorised, forces, torques and elongations scattered; the rest through the general loop.
@@ -149,39 +156,17 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
     int nrest = 0;
     for (int c = 0; c < n; c++) {
       // Branch-free: the pairs not done have zero forces and their history unchanged here.
-      const int i = pair_i[c], j = pair_j[c];
-      const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
-      const double fx = delx * fpair[c] + force[0][c], fy = dely * fpair[c] + force[1][c],
-                   fz = delz * fpair[c] + force[2][c];
-      f[i][0] += fx, f[i][1] += fy, f[i][2] += fz;
-      torque[i][0] += radius[i] * torque_unit[0][c], torque[i][1] += radius[i] * torque_unit[1][c],
-          torque[i][2] += radius[i] * torque_unit[2][c];
-      if (newton_pair || j < nlocal) {
-        f[j][0] -= fx, f[j][1] -= fy, f[j][2] -= fz;
-        torque[j][0] += radius[j] * torque_unit[0][c], torque[j][1] += radius[j] * torque_unit[1][c],
-            torque[j][2] += radius[j] * torque_unit[2][c];
-      }
+      const int i = pair_i[c];
+      apply_tangential(i, pair_j[c], fpair[c], force[0][c], force[1][c], force[2][c], torque_unit[0][c],
+                       torque_unit[1][c], torque_unit[2][c], energy[c], on[c]);
       double *h = history->values(i) + 3 * pair_jj[c];
       h[0] = next[0][c], h[1] = next[1][c], h[2] = next[2][c];
       history->touched(i)[pair_jj[c]] = next_touched[c] != 0.0;
-      if (evflag && on[c] != 0.0) ev_tally_xyz(i, j, nlocal, newton_pair, energy[c], 0.0, fx, fy, fz, delx, dely, delz);
       rest[nrest] = c;
       nrest += on[c] == 0.0;
     }
     // The films' budget records (the pairs not done have no film: no record).
-    if (budget && model.normal.lubrication.active())
-      for (int c = 0; c < n; c++) {
-        const double share = lubricated::film_share_of_capacity(film[c], capacity[c], dt);
-        if (!shear_records) {
-          record_film(pair_i[c], pair_j[c], film[c], share, nlocal, newton_pair);
-          continue;
-        }
-        const lubricated::Vec3 shear_force{shear[0][c], shear[1][c], shear[2][c]};
-        const double shear_share =
-            lubricated::shear_film_share(lubricated::dot(shear_force, shear_force), slip_sq[c], tangential_mass[c], dt);
-        this->record_films(pair_i[c], pair_j[c], film[c], shear_force,
-                           lubricated::contact_film_share(share, shear_share), nlocal, newton_pair);
-      }
+    if (budget && model.normal.lubrication.active()) record_normal_and_shear_films(pair_i, pair_j, n);
     for (int k = 0; k < nrest; k++)
       evaluate(pair_i[rest[k]], pair_j[rest[k]], pair_jj[rest[k]]);
   };
