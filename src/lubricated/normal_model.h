@@ -215,10 +215,9 @@ template <bool GRID> __attribute__((always_inline)) inline double film_force_apa
                                                                                    double reduced_mass, double u_n,
                                                                                    double dt, double inv_dt)
 {
-  const Lubrication::Activation al = lub.activation_inline<GRID>(radius);
   const double after = gap * radius.inverse, before = (gap - u_n * dt) * radius.inverse;
-  const double impulse = lub.six_pi_mu * radius.value * radius.value *
-                         (lub.film_integral_inline(after, al) - lub.film_integral_inline(before, al));
+  const double impulse =
+      lub.six_pi_mu * radius.value * radius.value * lub.film_integral_change_inline<GRID>(after, before, radius);
   return film_force_of_impulse(impulse, reduced_mass * std::fabs(u_n), inv_dt);
 }
 

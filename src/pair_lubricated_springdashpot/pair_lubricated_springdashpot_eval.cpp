@@ -43,16 +43,21 @@ static inline bool within_a_step(double rsq, double dv_dot_del, double dt, doubl
   return (s <= 0.0) | (s * s < outer_sq * rsq);
 }
 
-// How far each owned or ghost atom can move in the coming step (|v|_1 dt >= |v| dt): the pairs
-// that can close their gap within it are within the sum of both.
+// Per owned or ghost atom, what pass 1 reads of it, together (one cache line, not three): its
+// position and its radius grown by how far it can move in the coming step (|v|_1 dt >= |v| dt);
+// the pairs that can close their gap within the step are within the sum of both grown radii.
 void PairLubricatedSpringDashpot::update_step_reach(double **v)
 {
   const double dt = update->dt;
+  double **x = atom->x;
+  const double *radius = atom->radius;
   const int nall = atom->nlocal + atom->nghost;
-  if (static_cast<int>(step_reach.size()) < nall) step_reach.resize(atom->nmax);
+  if (static_cast<int>(step_reach.size()) < 4 * nall) step_reach.resize(4 * atom->nmax);
+  double *out = step_reach.data();
   for (int k = 0; k < nall; k++) {
     const double *vk = midpoint ? midpoint->step_velocity(k) : v[k];
-    step_reach[k] = (std::fabs(vk[0]) + std::fabs(vk[1]) + std::fabs(vk[2])) * dt;
+    out[4 * k] = x[k][0], out[4 * k + 1] = x[k][1], out[4 * k + 2] = x[k][2];
+    out[4 * k + 3] = radius[k] + (std::fabs(vk[0]) + std::fabs(vk[1]) + std::fabs(vk[2])) * dt;
   }
 }
 
@@ -65,54 +70,60 @@ void PairLubricatedSpringDashpot::update_step_reach(double **v)
 // in the film's reach go to the film-only list instead. Returns the candidates' count.
 template <bool WET, bool TANGENTIAL, bool SPLIT> int PairLubricatedSpringDashpot::select_pairs(int &nfilm)
 {
-  double **x = atom->x;
-  const double *radius = atom->radius;
+  const double *sphere = step_reach.data();    // x, y, z, grown radius (update_step_reach)
   const int *type = atom->type;
   const int inum = list->inum;
   const int *ilist = list->ilist;
   const int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
   const double *reach_table = max_reach.data();
-  const double *moves = step_reach.data();
   const int stride = ntypes_alloc + 1;
-  int ncandidate = 0;
-  nfilm = 0;
+  // One film reach for every type pair: no per-entry type lookup.
+  bool uniform_reach = true;
+  for (int a = 1; WET && a < stride; a++)
+    for (int b = 1; b < stride; b++)
+      uniform_reach = uniform_reach && reach_table[a * stride + b] == reach_table[stride + 1];
+  const double reach_all = reach_table[stride + 1];
+  // The counts in locals: the reference nfilm, which the lists' stores might alias, would keep
+  // its count in memory, a store-to-load chain through every entry.
+  int ncandidate = 0, nfilm_here = 0;
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
-    const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
-    const double radi_moved = radius[i] + moves[i];
+    const double xi = sphere[4 * i], yi = sphere[4 * i + 1], zi = sphere[4 * i + 2];
+    const double radi_moved = sphere[4 * i + 3];
     const double *reach_row = reach_table + type[i] * stride;
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
     const char *touched = TANGENTIAL && history ? history->touched(i) : nullptr;
     if (ncandidate + jnum > static_cast<int>(candidate_i.size()))
       grow_pair_lists(candidate_i, candidate_j, TANGENTIAL ? &candidate_jj : nullptr, ncandidate + jnum);
-    if (WET && SPLIT && nfilm + jnum > static_cast<int>(film_i.size()))
-      grow_pair_lists(film_i, film_j, nullptr, nfilm + jnum);
+    if (WET && SPLIT && nfilm_here + jnum > static_cast<int>(film_i.size()))
+      grow_pair_lists(film_i, film_j, nullptr, nfilm_here + jnum);
     int *out_i = candidate_i.data(), *out_j = candidate_j.data(), *out_jj = candidate_jj.data();
     int *film_out_i = film_i.data(), *film_out_j = film_j.data();
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      const double delx = xi - x[j][0];
-      const double dely = yi - x[j][1];
-      const double delz = zi - x[j][2];
+      const double *sj = sphere + 4 * j;
+      const double delx = xi - sj[0];
+      const double dely = yi - sj[1];
+      const double delz = zi - sj[2];
       const double rsq = delx * delx + dely * dely + delz * delz;
-      const double touch = radi_moved + radius[j] + moves[j];
-      const double near = touch + (WET ? reach_row[type[j]] : 0.0);
+      const double touch = radi_moved + sj[3];
+      const double near = touch + (WET ? (uniform_reach ? reach_all : reach_row[type[j]]) : 0.0);
       out_i[ncandidate] = i;
       out_j[ncandidate] = j;
       if (TANGENTIAL) out_jj[ncandidate] = jj;
       int keep = rsq < (SPLIT ? touch * touch : near * near);
       if (TANGENTIAL && touched) keep |= touched[jj];
       if (WET && SPLIT) {
-        film_out_i[nfilm] = i;
-        film_out_j[nfilm] = j;
-        nfilm += (rsq < near * near) & !keep;
+        film_out_i[nfilm_here] = i;
+        film_out_j[nfilm_here] = j;
+        nfilm_here += (rsq < near * near) & !keep;
       }
       ncandidate += keep;
     }
   }
-
+  nfilm = nfilm_here;
   return ncandidate;
 }
 
@@ -201,23 +212,30 @@ inline void PairLubricatedSpringDashpot::evaluate_pair(const PairLoop &loop, con
     }
     if (history) slot = {history->values(i) + 3 * jj, history->touched(i)[jj] != 0, loop.steps};
   }
-  const lub::ContactForces c = lub::contact_forces<TANGENTIAL>(model, p, slot, loop.when);
-  const lub::NormalForce &fn = c.normal;
-  if (TANGENTIAL && history) history->touched(i)[jj] = slot.touched;
-
-  const double fpair = fn.total() * rinv;
-  double fx = delx * fpair, fy = dely * fpair, fz = delz * fpair;
-  const double share = budget ? lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time) : 0.0;
-  if (budget && !(TANGENTIAL && shear_records)) record_film(i, j, fn.lubrication, share, nlocal, newton_pair);
-  if (TANGENTIAL) {
+  // Without tangential parts the normal force alone (a whole ContactForces would cost a zero
+  // fill per pair).
+  lub::NormalForce fn;
+  double share = 0.0;
+  lub::Vec3 tangential;
+  if constexpr (TANGENTIAL) {
+    const lub::ContactForces c = lub::contact_forces<true>(model, p, slot, loop.when);
+    fn = c.normal;
+    if (history) history->touched(i)[jj] = slot.touched;
+    if (budget) share = lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time);
     if (budget && shear_records)
       record_films(i, j, fn.lubrication, c.shear, lub::contact_film_share(share, c.shear_share(kick_time)), nlocal,
                    newton_pair);
-    fx += c.tangential.x, fy += c.tangential.y, fz += c.tangential.z;
+    tangential = c.tangential;
     loop.torque[i][0] += c.torque_i.x, loop.torque[i][1] += c.torque_i.y, loop.torque[i][2] += c.torque_i.z;
     if (newton_pair || j < nlocal)
       loop.torque[j][0] += c.torque_j.x, loop.torque[j][1] += c.torque_j.y, loop.torque[j][2] += c.torque_j.z;
+  } else {
+    fn = lub::normal_force(model.normal, p.gap, p.film, p.reduced_mass, p.u_n, loop.when);
+    if (budget) share = lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time);
   }
+  if (budget && !(TANGENTIAL && shear_records)) record_film(i, j, fn.lubrication, share, nlocal, newton_pair);
+  const double fpair = fn.total() * rinv;
+  const double fx = delx * fpair + tangential.x, fy = dely * fpair + tangential.y, fz = delz * fpair + tangential.z;
   f[i][0] += fx;
   f[i][1] += fy;
   f[i][2] += fz;

@@ -86,6 +86,33 @@ TEST(InlineLog, WithinFourUlpsOfTheLibraryOverTheNormalRange)
     EXPECT_LE(ulps(log_inline(std::ldexp(1.0, k)), k * std::log(2.0)), 1.0) << "2^" << k;
 }
 
+// The two- and three-argument forms (one division over a common denominator): each logarithm
+// within a few more ulps of the library's than log_inline alone, whatever the other arguments.
+TEST(InlineLog, SharedDivisionWithinEightUlps)
+{
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> exponent(-708.0, 709.0), near_one(-1e-3, 1e-3);
+  auto draw = [&](int n) { return n % 3 == 0 ? 1.0 + near_one(rng) : std::exp(exponent(rng)); };
+  auto error = [](double got, double x) {
+    const double reference = std::log(x);
+    return std::fabs(x - 1.0) < 0.5 ? std::fabs(got - reference) / std::fabs(x - 1.0) / 2.220446049250313e-16
+                                    : ulps(got, reference);
+  };
+  double worst = 0.0;
+  for (int n = 0; n < 100000; ++n) {
+    const double a = draw(n), b = draw(n + 1), c = draw(n + 2);
+    double la, lb, lc, la2, lb2;
+    log_inline(a, b, c, la, lb, lc);
+    log_inline(a, b, la2, lb2);
+    worst = std::max({worst, error(la, a), error(lb, b), error(lc, c), error(la2, a), error(lb2, b)});
+  }
+  EXPECT_LE(worst, 8.0);
+  double l1, l2, l3;
+  log_inline(1.0, 1.0, 1.0, l1, l2, l3);
+  EXPECT_EQ(l1, 0.0);
+  EXPECT_EQ(l3, 0.0);
+}
+
 // Random wet, exactly integrated pairs, apart over the step (gap >= 0 and gap - u_n dt >= 0,
 // from inside the saturated film to past eps_al): the film-only force equals normal_force's
 // film (and normal_force has no contact part there), within film_rounding.
