@@ -63,7 +63,7 @@ class PairLubricatedSpringDashpot : public Pair {
   // List entries kept by eval's first pass: i, j and (with friction, for the history) jj.
   std::vector<int> candidate_i, candidate_j, candidate_jj;
   void grow_pair_lists(std::vector<int> &list_i, std::vector<int> &list_j, std::vector<int> *list_jj, int need);
-  std::vector<double> step_reach;    // per atom: x, y, z and radius + bound on its move in a step
+  std::vector<double> step_reach;    // per atom: radius + bound on its move in one step
   // No tangential parts, exact integration, velocity Verlet (and `vector yes`): pass 1 puts the
   // pairs that cannot touch within the step but are in the film in a list of their own, and
   // vector_pairs.h computes them, the pairs in sustained contact and the other pairs that stay

@@ -43,21 +43,19 @@ static inline bool within_a_step(double rsq, double dv_dot_del, double dt, doubl
   return (s <= 0.0) | (s * s < outer_sq * rsq);
 }
 
-// Per owned or ghost atom, what pass 1 reads of it, together (one cache line, not three): its
-// position and its radius grown by how far it can move in the coming step (|v|_1 dt >= |v| dt);
-// the pairs that can close their gap within the step are within the sum of both grown radii.
+// Per owned or ghost atom, its radius grown by how far it can move in the coming step (|v|_1 dt
+// >= |v| dt): the pairs that can close their gap within the step are within the sum of both
+// grown radii. One array for pass 1 to read, not two.
 void PairLubricatedSpringDashpot::update_step_reach(double **v)
 {
   const double dt = update->dt;
-  double **x = atom->x;
   const double *radius = atom->radius;
   const int nall = atom->nlocal + atom->nghost;
-  if (static_cast<int>(step_reach.size()) < 4 * nall) step_reach.resize(4 * atom->nmax);
+  if (static_cast<int>(step_reach.size()) < nall) step_reach.resize(atom->nmax);
   double *out = step_reach.data();
   for (int k = 0; k < nall; k++) {
     const double *vk = midpoint ? midpoint->step_velocity(k) : v[k];
-    out[4 * k] = x[k][0], out[4 * k + 1] = x[k][1], out[4 * k + 2] = x[k][2];
-    out[4 * k + 3] = radius[k] + (std::fabs(vk[0]) + std::fabs(vk[1]) + std::fabs(vk[2])) * dt;
+    out[k] = radius[k] + (std::fabs(vk[0]) + std::fabs(vk[1]) + std::fabs(vk[2])) * dt;
   }
 }
 
@@ -70,7 +68,8 @@ void PairLubricatedSpringDashpot::update_step_reach(double **v)
 // in the film's reach go to the film-only list instead. Returns the candidates' count.
 template <bool WET, bool TANGENTIAL, bool SPLIT> int PairLubricatedSpringDashpot::select_pairs(int &nfilm)
 {
-  const double *sphere = step_reach.data();    // x, y, z, grown radius (update_step_reach)
+  const double *x = atom->x[0];               // positions, 3 per atom (one block)
+  const double *grown = step_reach.data();    // grown radii (update_step_reach)
   const int *type = atom->type;
   const int inum = list->inum;
   const int *ilist = list->ilist;
@@ -89,8 +88,8 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> int PairLubricatedSpringDashpot
   int ncandidate = 0, nfilm_here = 0;
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
-    const double xi = sphere[4 * i], yi = sphere[4 * i + 1], zi = sphere[4 * i + 2];
-    const double radi_moved = sphere[4 * i + 3];
+    const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
+    const double radi_moved = grown[i];
     const double *reach_row = reach_table + type[i] * stride;
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
@@ -103,12 +102,11 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> int PairLubricatedSpringDashpot
     int *film_out_i = film_i.data(), *film_out_j = film_j.data();
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      const double *sj = sphere + 4 * j;
-      const double delx = xi - sj[0];
-      const double dely = yi - sj[1];
-      const double delz = zi - sj[2];
+      const double delx = xi - x[3 * j];
+      const double dely = yi - x[3 * j + 1];
+      const double delz = zi - x[3 * j + 2];
       const double rsq = delx * delx + dely * dely + delz * delz;
-      const double touch = radi_moved + sj[3];
+      const double touch = radi_moved + grown[j];
       const double near = touch + (WET ? (uniform_reach ? reach_all : reach_row[type[j]]) : 0.0);
       out_i[ncandidate] = i;
       out_j[ncandidate] = j;
