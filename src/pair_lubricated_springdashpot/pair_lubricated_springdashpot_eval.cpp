@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -66,7 +67,11 @@ void PairLubricatedSpringDashpot::update_step_reach(double **v)
 // Whether an entry is kept follows no pattern a branch predictor could learn, hence no branch.
 // SPLIT: entries apart by more than both atoms can move in the step (no contact can start) but
 // in the film's reach go to the film-only list instead. Returns the candidates' count.
-template <bool WET, bool TANGENTIAL, bool SPLIT> int PairLubricatedSpringDashpot::select_pairs(int &nfilm)
+// In pieces: from list entry `next` on, stopping before an atom whose entries could take either
+// list past `limit` (each piece goes to pass 2 while its atoms are in the cache, and the lists
+// hold one piece, not the step's pairs); `next` is left at the first atom not selected.
+template <bool WET, bool TANGENTIAL, bool SPLIT>
+int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
 {
   const double *x = atom->x[0];               // positions, 3 per atom (one block)
   const double *grown = step_reach.data();    // grown radii (update_step_reach)
@@ -86,13 +91,15 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> int PairLubricatedSpringDashpot
   // The counts in locals: the reference nfilm, which the lists' stores might alias, would keep
   // its count in memory, a store-to-load chain through every entry.
   int ncandidate = 0, nfilm_here = 0;
-  for (int ii = 0; ii < inum; ii++) {
+  int ii = next;
+  for (; ii < inum; ii++) {
     const int i = ilist[ii];
+    const int jnum = numneigh[i];
+    if ((ncandidate + jnum > limit || nfilm_here + jnum > limit) && ncandidate + nfilm_here > 0) break;
     const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
     const double radi_moved = grown[i];
     const double *reach_row = reach_table + type[i] * stride;
     const int *jlist = firstneigh[i];
-    const int jnum = numneigh[i];
     const char *touched = TANGENTIAL && history ? history->touched(i) : nullptr;
     if (ncandidate + jnum > static_cast<int>(candidate_i.size()))
       grow_pair_lists(candidate_i, candidate_j, TANGENTIAL ? &candidate_jj : nullptr, ncandidate + jnum);
@@ -121,6 +128,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> int PairLubricatedSpringDashpot
       ncandidate += keep;
     }
   }
+  next = ii;
   nfilm = nfilm_here;
   return ncandidate;
 }
@@ -256,12 +264,11 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   // the ones it restored (fix_step_velocity.h).
   double **v = continued ? step_velocity->velocity() : atom->v;
   update_step_reach(v);
-  int nfilm;
-  const int ncandidate = select_pairs<WET, TANGENTIAL, SPLIT>(nfilm);
-  if (network_check && !update->setupflag && update->ntimestep >= network_next) {
-    network_next = update->ntimestep + lub::network_check_interval;
-    check_contact_network(ncandidate);
-  }
+  // The contact-network check reads the step's candidates at once: on its steps pass 1 selects
+  // the whole list in one piece.
+  const bool network_due = network_check && !update->setupflag && update->ntimestep >= network_next;
+  if (network_due) network_next = update->ntimestep + lub::network_check_interval;
+  const int limit = network_due ? std::numeric_limits<int>::max() : pairs_per_piece;
 
   // Full-step velocities at a run start, used by each integrator its own way (contact_step.h).
   PairLoop loop;
@@ -277,27 +284,33 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
       lub::film_kick_time(loop.dt, loop.when != lub::Evaluation::step, loop.when == lub::Evaluation::midpoint_start);
   loop.budget = WET && film_budget_now;
   loop.steps = !update->setupflag;
-  if (loop.budget) reserve_records(ncandidate + nfilm);
-
   auto evaluate = [ this, loop ](int i, int j, int jj) __attribute__((always_inline))
   {
     evaluate_pair<WET, TANGENTIAL>(loop, i, j, jj);
   };
-  if constexpr (SPLIT && !TANGENTIAL) {
-    vector_forces<false>(ncandidate, nfilm, v, loop.omega, evaluate);
-    return;
-  }
-  // With friction or rolling: the film-only pairs (normal and shear film) and, in steps, the
-  // sustained frictional contacts vectorised, the rest through the whole contact.
-  if constexpr (SPLIT) {
-    if (loop.steps) {
-      vector_forces<true>(ncandidate, nfilm, v, loop.omega, evaluate);
-      return;
+
+  int next = 0;
+  do {
+    int nfilm;
+    const int ncandidate = select_pairs<WET, TANGENTIAL, SPLIT>(next, nfilm, limit);
+    if (network_due) check_contact_network(ncandidate);
+    if (loop.budget) reserve_records(ncandidate + nfilm);
+    if constexpr (SPLIT && !TANGENTIAL) {
+      vector_forces<false>(ncandidate, nfilm, v, loop.omega, evaluate);
+      continue;
     }
-    vector_forces<true>(0, nfilm, v, loop.omega, evaluate);
-  }
-  for (int c = 0; c < ncandidate; c++)
-    evaluate(candidate_i[c], candidate_j[c], TANGENTIAL ? candidate_jj[c] : 0);
+    // With friction or rolling: the film-only pairs (normal and shear film) and, in steps, the
+    // sustained frictional contacts vectorised, the rest through the whole contact.
+    if constexpr (SPLIT) {
+      if (loop.steps) {
+        vector_forces<true>(ncandidate, nfilm, v, loop.omega, evaluate);
+        continue;
+      }
+      vector_forces<true>(0, nfilm, v, loop.omega, evaluate);
+    }
+    for (int c = 0; c < ncandidate; c++)
+      evaluate(candidate_i[c], candidate_j[c], TANGENTIAL ? candidate_jj[c] : 0);
+  } while (next < list->inum);
 }
 
 // The loops compute() runs: one per combination (a scene pays only for what it uses).
