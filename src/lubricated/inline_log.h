@@ -1,6 +1,6 @@
 // Natural logarithm without branches or calls, so that loops over pairs that need it can be
 // vectorised by the compiler (std::log is a call; glibc's vector variants need -ffast-math).
-// Used by the film of pairs that stay apart over a step (lubrication.h, film_integral_inline).
+// Used by the film of pairs that stay apart over a step (lubrication.h, film_integral_change_inline).
 #pragma once
 
 #include <cstdint>

@@ -150,9 +150,8 @@ struct Lubrication {
     return film_integral(eps, al.eps, al.lambda, al.integral);
   }
 
-  // The same two without branches or calls (log_inline), for loops the compiler vectorises;
-  // equal to activation() and film_integral() within rounding. Only for an active film;
-  // GRID: whether it has a grid spacing.
+  // activation() without branches or calls (log_inline), for loops the compiler vectorises;
+  // equal to it within rounding. Only for an active film; GRID: whether it has a grid spacing.
   template <bool GRID> __attribute__((always_inline)) Activation activation_inline(const FilmRadius &radius) const
   {
     if (!GRID) return {eps_activation, lambda_activation, integral_activation};
@@ -160,17 +159,10 @@ struct Lubrication {
     const double l = log_inline(eps_al);
     return {eps_al, expansion.lambda(eps_al, l), expansion.integral(eps_al, l)};
   }
-  __attribute__((always_inline)) double film_integral_inline(double eps, const Activation &al) const
-  {
-    const double film = std::min(std::max(eps, eps_saturation), al.eps);    // eps_1 <= . <= eps_al
-    const double saturated = std::min(std::max(eps, eps_release), eps_saturation);
-    return al.integral - expansion.integral(film, log_inline(film)) - al.lambda * (al.eps - film) +
-           (lambda_saturated - al.lambda) * (eps_saturation - saturated);
-  }
   double film_integral(double eps, double radius) const { return film_integral(eps, activation(FilmRadius(radius))); }
 
-  // P(after) - P(before) for a contact of film radius R, as film_integral_inline(after, al) -
-  // film_integral_inline(before, al) within rounding, cheaper: L(eps_al), which cancels, left out,
+  // P(after) - P(before) for a contact of film radius R (film_integral) without branches or calls,
+  // equal to it within rounding and cheaper than two of them: L(eps_al), which cancels, left out,
   // 1 / eps_al as R / (0.75 dx) (the clamp at eps_1 as a clamp of the inverse) and the
   // logarithms' divisions shared (log_inline of two or three). For loops the compiler vectorises
   // (film_force_apart); GRID: whether the film has a grid spacing.

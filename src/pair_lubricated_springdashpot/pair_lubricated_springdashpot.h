@@ -53,6 +53,7 @@ class PairLubricatedSpringDashpot : public Pair {
   std::vector<lubricated::ContactModel> models;    // derived from coeffs and dt
   std::vector<double> maxrad;                      // largest radius per type
   std::vector<double> max_reach;                   // farthest film gap per type pair
+  bool film_reach_uniform = true;                  // one max_reach for all (eval sets it)
   bool any_wet = false;
   bool any_tangential = false;                   // friction, rolling or shear film on some type pair
   class FixContactHistory *history = nullptr;    // tangential elongation per contact

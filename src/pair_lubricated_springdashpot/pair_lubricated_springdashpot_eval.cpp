@@ -82,11 +82,7 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
   int **firstneigh = list->firstneigh;
   const double *reach_table = max_reach.data();
   const int stride = ntypes_alloc + 1;
-  // One film reach for every type pair: no per-entry type lookup.
-  bool uniform_reach = true;
-  for (int a = 1; WET && a < stride; a++)
-    for (int b = 1; b < stride; b++)
-      uniform_reach = uniform_reach && reach_table[a * stride + b] == reach_table[stride + 1];
+  const bool uniform_reach = film_reach_uniform;
   const double reach_all = reach_table[stride + 1];
   // The counts in locals: the reference nfilm, which the lists' stores might alias, would keep
   // its count in memory, a store-to-load chain through every entry.
@@ -269,6 +265,12 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   const bool network_due = network_check && !update->setupflag && update->ntimestep >= network_next;
   if (network_due) network_next = update->ntimestep + lub::network_check_interval;
   const int limit = network_due ? std::numeric_limits<int>::max() : pairs_per_piece;
+  // One film reach for every type pair: pass 1 then looks up no types.
+  const int stride = ntypes_alloc + 1;
+  film_reach_uniform = true;
+  for (int a = 1; WET && a < stride; a++)
+    for (int b = 1; b < stride; b++)
+      film_reach_uniform = film_reach_uniform && max_reach[a * stride + b] == max_reach[stride + 1];
 
   // Full-step velocities at a run start, used by each integrator its own way (contact_step.h).
   PairLoop loop;
@@ -276,7 +278,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   loop.omega = continued ? step_velocity->spin() : atom->omega;
   loop.radius = atom->radius, loop.rmass = atom->rmass, loop.inverse = inverse_mass_on ? inverse_mass.data() : nullptr;
   loop.type = atom->type;
-  loop.models = models.data(), loop.stride = ntypes_alloc + 1;
+  loop.models = models.data(), loop.stride = stride;
   loop.nlocal = atom->nlocal, loop.newton_pair = force->newton_pair;
   loop.dt = update->dt;
   loop.when = continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
