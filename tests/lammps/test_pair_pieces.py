@@ -1,25 +1,33 @@
-"""Pass 1 of the pair loop selects the neighbor list in pieces of at most 1024 pairs (each piece
-goes to the force loops before the next is selected, pair_lubricated_springdashpot_eval.cpp):
-no pair may be lost or taken twice at a piece's edge.
+"""Pass 1 of the pair loop selects the neighbor list in pieces of at most pairs_per_piece pairs
+(pair_lubricated_springdashpot.h; each piece goes to the force loops before the next is
+selected, pair_lubricated_springdashpot_eval.cpp): no pair may be lost or taken twice at a
+piece's edge.
 
-The scene: 3150 identical dimers (R = 1 mm) on a simple cubic lattice of 8 mm (no pair between
+The scene: 10648 identical dimers (R = 1 mm) on a simple cubic lattice of 8 mm (no pair between
 dimers: the list's cutoff is under 2.3 mm), each approaching head-on at 0.1 m/s with a sideways
 slip of 0.04 m/s, in overlap of 0.005 R (contact: the candidates' list; clear of the film's
-release at eps_2 = -0.01, where rounding would decide whether the film acts) or apart inside the film (the
-film-only list), dry and wet, with and without friction; 1 rank (4 pieces) and 2 ranks (2
-pieces each). Every dimer feels the same force at the set-up and after 5 steps: a pair dropped
-at a piece's edge would leave its dimer without force (or with the previous step's), a pair
-taken twice would double it. Tolerance: 1e-9 of the force. The dimers differ only in where they
-sit: coordinates up to 0.12 m round the 1e-5 m overlap to about 1e-12 of itself, and 5 steps
-make that 5e-11. A lost or doubled pair changes its dimer's force by 100 %.
+release at eps_2 = -0.01, where rounding would decide whether the film acts) or apart inside the
+film (the film-only list), dry and wet, with and without friction; 1 rank (3 pieces of 4096) and
+2 ranks (2 pieces each; the test requires more than one per rank of the header's piece size). Every
+dimer feels the same force at the set-up and after 5 steps: a pair dropped at a piece's edge
+would leave its dimer without force (or with the previous step's), a pair taken twice would
+double it. Tolerance: 1e-9 of the force. The dimers differ only in where they sit: coordinates
+up to 0.18 m round the 1e-5 m overlap to about 2e-12 of itself, and 5 steps make that 1e-10. A
+lost or doubled pair changes its dimer's force by 100 %.
 """
+import pathlib
+import re
+
 import pytest
 
 import dense_scenes
 
 R = 1.0e-3
 SPACING = 8.0e-3
-CELLS = (15, 15, 14)    # 3150 dimers
+CELLS = (22, 22, 22)    # 10648 dimers
+HEADER = pathlib.Path(__file__).resolve().parents[2] / "src" / "pair_lubricated_springdashpot" / \
+    "pair_lubricated_springdashpot.h"
+PAIRS_PER_PIECE = int(re.search(r"pairs_per_piece = (\d+);", HEADER.read_text()).group(1))
 SKIN = 0.2e-3
 
 CASES = {
@@ -70,6 +78,8 @@ run 5
 @pytest.mark.parametrize("nprocs", [1, 2])
 @pytest.mark.parametrize("case", CASES)
 def test_every_dimer_feels_the_same_force(lmp, case, nprocs):
+    # more than one piece on each rank (the ranks split the lattice in halves), or no edge to test
+    assert CELLS[0] * CELLS[1] * CELLS[2] // nprocs > PAIRS_PER_PIECE
     coefficients, gap = CASES[case]
     result = lmp(scene(coefficients, gap), nprocs=nprocs)
     assert dense_scenes.ranks(lmp.log) == {nprocs}
