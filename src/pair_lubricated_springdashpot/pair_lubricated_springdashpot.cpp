@@ -192,6 +192,9 @@ void PairLubricatedSpringDashpot::init_style()
     history_id = "LUBRICATED_HISTORY_" + std::to_string(instance_me);
     history = dynamic_cast<FixContactHistory *>(modify->add_fix(history_id + " all LUBRICATED_HISTORY 3"));
     if (!history) error->all(FLERR, "{}: could not create its contact-history fix", STYLE);
+    // Friction added after a run: the neighbor list of that run is kept (init_list is not
+    // called again while the requests are unchanged) and is the one the history follows.
+    if (list) history->set_list(list);
   }
   if (!any_friction && history) {
     modify->delete_fix(history_id);

@@ -97,7 +97,9 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
     const double *reach_row = reach_table + type[i] * stride;
     const int *jlist = firstneigh[i];
     const char *touched = TANGENTIAL && history ? history->touched(i) : nullptr;
-    if (ncandidate + jnum > static_cast<int>(candidate_i.size()))
+    // candidate_jj only grows with friction: a run that adds friction finds it shorter.
+    if (ncandidate + jnum > static_cast<int>(candidate_i.size()) ||
+        (TANGENTIAL && candidate_jj.size() < candidate_i.size()))
       grow_pair_lists(candidate_i, candidate_j, TANGENTIAL ? &candidate_jj : nullptr, ncandidate + jnum);
     if (WET && SPLIT && nfilm_here + jnum > static_cast<int>(film_i.size()))
       grow_pair_lists(film_i, film_j, nullptr, nfilm_here + jnum);

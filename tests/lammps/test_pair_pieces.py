@@ -93,3 +93,28 @@ def test_every_dimer_feels_the_same_force(lmp, case, nprocs):
             assert high - low <= 1e-9 * scale, f"{state}: dimers differ by {(high - low) / scale:.3g}"
         if "friction" in case and gap < 0.0 and state == "force0":
             assert low_y < 0.0, "no friction against the slip"
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+@pytest.mark.parametrize("wet", [False, True], ids=["dry", "wet"])
+def test_friction_added_between_runs(lmp, wet, nprocs):
+    """A run without friction, then pair_coeff adds it: the second run's set-up creates the
+    contact history, which must follow the list the first run built (LAMMPS does not call
+    init_list again for an unchanged request), and pass 1's history index array must grow
+    although its pair arrays are already long enough. Both used to crash (segmentation fault).
+    The dimers, still in contact (overlap 0.005 R, 5 steps at 0.1 m/s close 0.5 um more), then
+    feel friction against their slip, every dimer the same (tolerance as above)."""
+    film = "viscosity 1e-3 grid 1.25e-4 " if wet else ""
+    script = scene(film, -0.005)
+    first, second = script.split("run 0\n", 1)
+    script = (first + "run 0\n" + second.replace(
+        "run 5\n", f"run 5\npair_coeff * * 0.9 ncontact 8 {film}friction 0.3\nrun 0\n", 1))
+    result = lmp(script, nprocs=nprocs)
+    assert dense_scenes.ranks(lmp.log) == {nprocs}
+    low_x, high_x, low_y, high_y, low_z, high_z, count = result["force5"]
+    assert count == CELLS[0] * CELLS[1] * CELLS[2]
+    assert low_x < 0.0, "no normal force"
+    assert low_y < 0.0, "no friction against the slip"
+    scale = abs(low_x)
+    for low, high in ((low_x, high_x), (low_y, high_y), (low_z, high_z)):
+        assert high - low <= 1e-9 * scale, f"dimers differ by {(high - low) / scale:.3g}"
