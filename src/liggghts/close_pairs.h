@@ -36,8 +36,8 @@ inline bool sustained_contact(const NormalModel &model, double gap, const FilmRa
 {
   if (!model.exact || !stepping) return false;
   bool sustained = false;
-  fn = model.lubrication.grid_spacing > 0.0 ? sustained_contact_force<true>(model, gap, radius, m_e, u_n, sustained)
-                                            : sustained_contact_force<false>(model, gap, radius, m_e, u_n, sustained);
+  // One pair: lambda(eps_al) by std::log (log_inline's series is a chain of dependent operations).
+  fn = sustained_contact_force(model, gap, radius, m_e, u_n, model.lubrication.lambda_activation_for(radius), sustained);
   return sustained;
 }
 

@@ -150,6 +150,15 @@ struct Lubrication {
     return film_integral(eps, al.eps, al.lambda, al.integral);
   }
 
+  // lambda(eps_al) alone, as activation(): for one pair at a time, where std::log's call costs
+  // less than log_inline's series (a chain of dependent operations there, not a vector's lanes).
+  double lambda_activation_for(const FilmRadius &radius) const
+  {
+    if (grid_spacing <= 0.0) return lambda_activation;
+    const double eps_al = activation_for(radius);
+    return expansion.lambda(eps_al, std::log(eps_al));
+  }
+
   // activation() without branches or calls (log_inline), for loops the compiler vectorises;
   // equal to it within rounding. Only for an active film; GRID: whether it has a grid spacing.
   template <bool GRID> __attribute__((always_inline)) Activation activation_inline(const FilmRadius &radius) const

@@ -227,11 +227,11 @@ template <bool GRID> __attribute__((always_inline)) inline double film_force_apa
 // below eps_2), so P is linear in eps and the impulse needs no logarithm of the gap. Forces
 // [force], energy k d^2 / 2 [energy]. Without branches or calls, for loops the compiler
 // vectorises; `sustained` says whether the pair is in that state (if not, the result means
-// nothing: take normal_force()). GRID: whether the film has a grid spacing.
-template <bool GRID>
+// nothing: take normal_force()). lambda_al: lambda(eps_al) of the pair's film radius
+// (Lubrication::activation, activation_inline or lambda_activation_for).
 __attribute__((always_inline)) inline NormalForce sustained_contact_force(const NormalModel &m, double gap,
                                                                           const FilmRadius &radius, double reduced_mass,
-                                                                          double u_n, bool &sustained)
+                                                                          double u_n, double lambda_al, bool &sustained)
 {
   const ContactStep &cs = m.step;
   const double g0 = gap - u_n * cs.dt;
@@ -240,12 +240,22 @@ __attribute__((always_inline)) inline NormalForce sustained_contact_force(const 
   f.energy = 0.5 * reduced_mass * m.contact.stiffness_per_mass * gap * gap;
   f.contact = reduced_mass * sustained_acceleration(cs, gap, u_n);
   const Lubrication &lub = m.lubrication;
-  const double lambda_al = lub.activation_inline<GRID>(radius).lambda;
   const double release = lub.eps_release * radius.value;
   const double impulse = lub.six_pi_mu * radius.value * (lub.lambda_saturated - lambda_al) *
                          (std::max(g0, release) - std::max(gap, release));
   f.lubrication = film_force_of_impulse(impulse, reduced_mass * std::fabs(u_n), cs.inv_dt);
   return f;
+}
+
+// The same for loops the compiler vectorises (lambda_al by log_inline); GRID: whether the film
+// has a grid spacing.
+template <bool GRID>
+__attribute__((always_inline)) inline NormalForce sustained_contact_force(const NormalModel &m, double gap,
+                                                                          const FilmRadius &radius, double reduced_mass,
+                                                                          double u_n, bool &sustained)
+{
+  return sustained_contact_force(m, gap, radius, reduced_mass, u_n,
+                                 m.lubrication.activation_inline<GRID>(radius).lambda, sustained);
 }
 
 inline NormalForce normal_force(const NormalModel &m, double gap, double radius, double reduced_mass, double u_n,

@@ -1,6 +1,7 @@
 // The branch-free forms the pair style's vectorised loops use (film_force_apart for pairs that
-// stay apart over a step, sustained_contact_force, log_inline): the same forces as
-// normal_force() where they apply, to rounding.
+// stay apart over a step, sustained_contact_force, log_inline), and the one-pair form of
+// sustained_contact_force (lambda(eps_al) given): the same forces as normal_force() where they
+// apply, to rounding.
 #include "lubricated/inline_exp.h"
 #include "lubricated/inline_log.h"
 #include "lubricated/contact.h"
@@ -190,6 +191,14 @@ TEST(SustainedContact, EqualsNormalForceWhereItApplies)
       ASSERT_DOUBLE_EQ(vector_form.energy, expected.energy);
       ASSERT_NEAR(vector_form.lubrication, expected.lubrication, film_rounding(m, radius, dt))
           << "gap " << gap << " u_n dt " << u_n * dt;
+      // The one-pair form (LIGGGHTS's contacts): lambda(eps_al) by std::log, as activation().
+      ASSERT_EQ(m.lubrication.lambda_activation_for(radius), m.lubrication.activation(radius).lambda);
+      bool scalar_sustained = false;
+      const NormalForce scalar_form = sustained_contact_force(
+          m, gap, radius, mass, u_n, m.lubrication.lambda_activation_for(radius), scalar_sustained);
+      ASSERT_TRUE(scalar_sustained);
+      ASSERT_DOUBLE_EQ(scalar_form.contact, expected.contact);
+      ASSERT_NEAR(scalar_form.lubrication, expected.lubrication, film_rounding(m, radius, dt));
     }
   }
   // Both kinds are drawn: sustained contacts and contacts that start or end within the step.
