@@ -37,7 +37,8 @@ inline bool sustained_contact(const NormalModel &model, double gap, const FilmRa
   if (!model.exact || !stepping) return false;
   bool sustained = false;
   // One pair: lambda(eps_al) by std::log (log_inline's series is a chain of dependent operations).
-  fn = sustained_contact_force(model, gap, radius, m_e, u_n, model.lubrication.lambda_activation_for(radius), sustained);
+  fn =
+      sustained_contact_force(model, gap, radius, m_e, u_n, model.lubrication.lambda_activation_for(radius), sustained);
   return sustained;
 }
 
