@@ -240,10 +240,16 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     return pair_reduced_mass(scdata.i, scdata.j);
   }
 
-  double pair_reduced_mass(int i, int j) const
+  __attribute__((always_inline)) double pair_reduced_mass(int i, int j) const
   {
     const double *rmass = atom->rmass;
     if (plain_masses_) return lubricated::reduced_mass(rmass[i], rmass[j]);
+    return held_pair_reduced_mass(i, j);
+  }
+
+  // pair_reduced_mass where some atoms are held or in rigid bodies.
+  double held_pair_reduced_mass(int i, int j) const
+  {
     double m_i, m_j;
     atom_masses(i, j, m_i, m_j);
     const bool held_i = immovable(i), held_j = immovable(j);

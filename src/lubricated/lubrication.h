@@ -156,7 +156,10 @@ struct Lubrication {
   {
     if (grid_spacing <= 0.0) return lambda_activation;
     const double eps_al = activation_for(radius);
-    return expansion.lambda(eps_al, std::log(eps_al));
+    // 1 / eps_al as R / (0.75 dx) (clamped at 1 / eps_1): no division after the logarithm.
+    const double inverse_al = std::min(radius.value * (1.0 / (grid_activation * grid_spacing)), 1.0 / eps_saturation);
+    const double l = std::log(eps_al);
+    return expansion.c_inv * inverse_al + expansion.c_log * l + expansion.c_elog * eps_al * l + expansion.c_0;
   }
 
   // activation() without branches or calls (log_inline), for loops the compiler vectorises;

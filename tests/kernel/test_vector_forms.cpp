@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -191,8 +192,17 @@ TEST(SustainedContact, EqualsNormalForceWhereItApplies)
       ASSERT_DOUBLE_EQ(vector_form.energy, expected.energy);
       ASSERT_NEAR(vector_form.lubrication, expected.lubrication, film_rounding(m, radius, dt))
           << "gap " << gap << " u_n dt " << u_n * dt;
-      // The one-pair form (LIGGGHTS's contacts): lambda(eps_al) by std::log, as activation().
-      ASSERT_EQ(m.lubrication.lambda_activation_for(radius), m.lubrication.activation(radius).lambda);
+      // The one-pair form (LIGGGHTS's contacts): lambda(eps_al) by std::log, as activation()
+      // but 1 / eps_al as R / (0.75 dx): to the rounding of lambda's terms.
+      const Lubrication &lub = m.lubrication;
+      const Lubrication::Activation al = lub.activation(radius);
+      const double l = std::log(std::max(al.eps, 1e-300)),
+                   terms = std::fabs(lub.expansion.c_inv / al.eps) + std::fabs(lub.expansion.c_log * l) +
+                           std::fabs(lub.expansion.c_elog * al.eps * l) + std::fabs(lub.expansion.c_0);
+      if (lub.grid_spacing > 0.0)
+        ASSERT_NEAR(lub.lambda_activation_for(radius), al.lambda, 1e-15 * terms);
+      else    // the type pair's own lambda(eps_al)
+        ASSERT_EQ(lub.lambda_activation_for(radius), al.lambda);
       bool scalar_sustained = false;
       const NormalForce scalar_form = sustained_contact_force(
           m, gap, radius, mass, u_n, m.lubrication.lambda_activation_for(radius), scalar_sustained);
