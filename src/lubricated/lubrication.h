@@ -34,6 +34,11 @@ struct Expansion {
 
   // l = ln(eps), when the caller has it already.
   double lambda(double eps, double l) const { return c_inv / eps + c_log * l + c_elog * eps * l + c_0; }
+  // The same with 1 / eps given (no division where the caller has it from another quotient).
+  double lambda_of_inverse(double eps, double inverse, double l) const
+  {
+    return c_inv * inverse + c_log * l + c_elog * eps * l + c_0;
+  }
   double integral(double eps, double l) const
   {
     return c_inv * l + c_log * (eps * l - eps) + c_elog * eps * eps * (0.5 * l - 0.25) + c_0 * eps;
@@ -159,7 +164,7 @@ struct Lubrication {
     // 1 / eps_al as R / (0.75 dx) (clamped at 1 / eps_1): no division after the logarithm.
     const double inverse_al = std::min(radius.value * (1.0 / (grid_activation * grid_spacing)), 1.0 / eps_saturation);
     const double l = std::log(eps_al);
-    return expansion.c_inv * inverse_al + expansion.c_log * l + expansion.c_elog * eps_al * l + expansion.c_0;
+    return expansion.lambda_of_inverse(eps_al, inverse_al, l);
   }
 
   // activation() without branches or calls (log_inline), for loops the compiler vectorises;
@@ -192,8 +197,7 @@ struct Lubrication {
       double l_al;
       log_inline(f_a, f_b, eps_al, l_a, l_b, l_al);
       const double inverse_al = std::min(radius.value * (1.0 / reach), 1.0 / eps_saturation);
-      lambda_al =
-          expansion.c_inv * inverse_al + expansion.c_log * l_al + expansion.c_elog * eps_al * l_al + expansion.c_0;
+      lambda_al = expansion.lambda_of_inverse(eps_al, inverse_al, l_al);
     } else {
       log_inline(f_a, f_b, l_a, l_b);
       lambda_al = lambda_activation;
