@@ -44,7 +44,8 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
                                   TANGENTIAL ? omega[0] : nullptr};
   constexpr int chunk = 256;
   double fpair[chunk], energy[chunk], film[chunk], capacity[chunk];
-  int done[chunk], rest[chunk];
+  double done[chunk];
+  int rest[chunk], exit_i[chunk], exit_j[chunk];
   const bool budget = film_budget_now;
   auto apply = [&](int i, int j, double fij, double eij) {
     const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
@@ -177,15 +178,27 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
       vector_pairs::contact_or_film_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
     else
       vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-    int nrest = 0;
+    int nrest = 0, nexit = 0;
     for (int c = 0; c < n; c++) {
       // Branch-free (which pairs are done follows no pattern): the others have fpair = 0 (and
-      // no film) here and are listed for the general loop.
+      // no film) here and are listed, those leaving the overlap for their own loop, the rest
+      // for the general loop.
       apply(pair_i[c], pair_j[c], fpair[c], energy[c]);
+      exit_i[nexit] = pair_i[c], exit_j[nexit] = pair_j[c];
+      nexit += done[c] == 2.0;
       rest[nrest] = c;
-      nrest += !done[c];
+      nrest += done[c] == 0.0;
     }
     if (budget && model.lubrication.active()) record_films(pair_i, pair_j, n);
+    if (nexit > 0) {
+      if (atoms.inverse_mass)
+        vector_pairs::contact_exits_by_inverse(atoms, model, exit_i, exit_j, nexit, fpair, film, capacity, energy);
+      else
+        vector_pairs::contact_exits(atoms, model, exit_i, exit_j, nexit, fpair, film, capacity, energy);
+      for (int c = 0; c < nexit; c++)
+        apply(exit_i[c], exit_j[c], fpair[c], energy[c]);
+      if (budget && model.lubrication.active()) record_films(exit_i, exit_j, nexit);
+    }
     for (int k = 0; k < nrest; k++)
       evaluate(pair_i[rest[k]], pair_j[rest[k]], 0);
   };

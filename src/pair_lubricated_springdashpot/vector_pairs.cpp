@@ -68,7 +68,7 @@ film_only_loop(const Atoms &atoms, const lub::NormalModel &model, const int *__r
 template <bool WET, bool GRID, bool INVERSE> __attribute__((always_inline)) static inline void
 contact_or_film_loop(const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
                      const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
-                     double *__restrict capacity, double *__restrict energy, int *__restrict done)
+                     double *__restrict capacity, double *__restrict energy, double *__restrict done)
 {
   const double dt = model.step.dt, inv_dt = model.step.inv_dt;
   for (int c = 0; c < n; c++) {
@@ -87,7 +87,27 @@ contact_or_film_loop(const Atoms &atoms, const lub::NormalModel &model, const in
     film_force[c] = WET & known ? (sustained ? contact.lubrication : film) : 0.0;
     capacity[c] = lub::film_capacity(g.m_e, g.u_n);
     energy[c] = known & sustained ? contact.energy : 0.0;
-    done[c] = known;
+    // 2: leaving the overlap within the coming step (contact_exits; never known: in overlap,
+    // not sustained). Doubles: with an int output GCC 12 does not vectorise this loop.
+    const bool exits = lub::leaves_overlap(model.step, gap, gap - g.u_n * dt) & (g.r > 0.0);
+    done[c] = (known ? 1.0 : 0.0) + (exits ? 2.0 : 0.0);
+  }
+}
+
+// Kept pairs that leave the overlap within the coming step (lub::leaves_overlap): the exit's
+// force, the saturated film and the spring's energy; as contact_or_film's outputs.
+template <bool WET, bool GRID, bool INVERSE> __attribute__((always_inline)) static inline void
+contact_exit_loop(const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
+                  const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
+                  double *__restrict capacity, double *__restrict energy)
+{
+  for (int c = 0; c < n; c++) {
+    const Geometry g = geometry<INVERSE>(atoms, pair_i[c], pair_j[c]);
+    const lub::NormalForce f = lub::overlap_exit_force<GRID>(model, g.r - g.radsum, g.film, g.m_e, g.u_n);
+    fpair[c] = f.total() * g.rinv;
+    film_force[c] = WET ? f.lubrication : 0.0;
+    capacity[c] = lub::film_capacity(g.m_e, g.u_n);
+    energy[c] = f.energy;
   }
 }
 
@@ -281,7 +301,7 @@ void film_only_by_inverse(const Atoms &atoms, const lub::NormalModel &model, con
 
 VECTOR_PAIRS_CLONES
 void contact_or_film(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n,
-                     double *fpair, double *film, double *capacity, double *energy, int *done)
+                     double *fpair, double *film, double *capacity, double *energy, double *done)
 {
   const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
   if (!wet)
@@ -294,7 +314,7 @@ void contact_or_film(const Atoms &atoms, const lub::NormalModel &model, const in
 
 VECTOR_PAIRS_CLONES
 void contact_or_film_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j,
-                                int n, double *fpair, double *film, double *capacity, double *energy, int *done)
+                                int n, double *fpair, double *film, double *capacity, double *energy, double *done)
 {
   const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
   if (!wet)
@@ -303,6 +323,32 @@ void contact_or_film_by_inverse(const Atoms &atoms, const lub::NormalModel &mode
     contact_or_film_loop<true, true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
   else
     contact_or_film_loop<true, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+}
+
+VECTOR_PAIRS_CLONES
+void contact_exits(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n,
+                   double *fpair, double *film, double *capacity, double *energy)
+{
+  const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
+  if (!wet)
+    contact_exit_loop<false, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
+  else if (grid)
+    contact_exit_loop<true, true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
+  else
+    contact_exit_loop<true, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
+}
+
+VECTOR_PAIRS_CLONES
+void contact_exits_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j,
+                              int n, double *fpair, double *film, double *capacity, double *energy)
+{
+  const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
+  if (!wet)
+    contact_exit_loop<false, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
+  else if (grid)
+    contact_exit_loop<true, true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
+  else
+    contact_exit_loop<true, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
 }
 
 #define SHEAR_OUTPUTS(o)                                                                                               \

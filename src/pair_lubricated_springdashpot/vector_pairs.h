@@ -34,18 +34,25 @@ struct Atoms {
 void film_only(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i, const int *pair_j, int n,
                double *fpair, double *film, double *capacity);
 
-// Pairs that may touch within the step: done[c] = 1 where pair c is in sustained contact or
-// stays apart over the step (the film alone), with its fpair and spring energy[c]; 0 where
-// a contact starts or ends, for the general loop (fpair, energy 0).
+// Pairs that may touch within the step (done: 0, 1 or 2 as doubles): done[c] = 1 where pair c is in sustained contact or
+// stays apart over the step (the film alone), with its fpair and spring energy[c]; 2 where it
+// leaves the overlap within the step (for contact_exits), 0 where a contact starts or ends
+// otherwise, for the general loop (fpair, energy 0 for both).
 void contact_or_film(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i, const int *pair_j,
-                     int n, double *fpair, double *film, double *capacity, double *energy, int *done);
+                     int n, double *fpair, double *film, double *capacity, double *energy, double *done);
+
+// Pairs that contact_or_film marked 2 (leaving the overlap within the step): its outputs.
+void contact_exits(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i, const int *pair_j,
+                   int n, double *fpair, double *film, double *capacity, double *energy);
 
 // The same with m_e from atoms.inverse_mass (a pair of two immovable atoms: all 0, done).
+void contact_exits_by_inverse(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
+                              const int *pair_j, int n, double *fpair, double *film, double *capacity, double *energy);
 void film_only_by_inverse(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
                           const int *pair_j, int n, double *fpair, double *film, double *capacity);
 void contact_or_film_by_inverse(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
                                 const int *pair_j, int n, double *fpair, double *film, double *capacity, double *energy,
-                                int *done);
+                                double *done);
 
 // Pairs apart by more than both atoms move in the step, with friction or rolling (which act in
 // contact only) and maybe a shear film: film_only's outputs, and the shear film's force on i

@@ -2,6 +2,7 @@
 // stay apart over a step, sustained_contact_force, log_inline), and the one-pair form of
 // sustained_contact_force (lambda(eps_al) given): the same forces as normal_force() where they
 // apply, to rounding.
+#include "lubricated/inline_atan.h"
 #include "lubricated/inline_exp.h"
 #include "lubricated/inline_log.h"
 #include "lubricated/contact.h"
@@ -222,6 +223,67 @@ TEST(InlineExp, OneMinusExpWithinTwoUlpsOfExpm1)
   EXPECT_EQ(one_minus_exp_neg_inline(1e300), 1.0);
   for (double x = 1e-14; x < 800.0; x *= 1.001)
     EXPECT_LE(ulps(one_minus_exp_neg_inline(x), -std::expm1(-x)), 2.0) << x;
+}
+
+TEST(InlineExp, ExpWithinTwoUlpsOfTheLibrary)
+{
+  EXPECT_EQ(exp_inline(0.0), 1.0);
+  for (double x = -708.0; x < 709.0; x += 0.0137)
+    EXPECT_LE(ulps(exp_inline(x), std::exp(x)), 2.0) << x;
+}
+
+// Over the angles an exit can take (y > 0, x of either sign) and scales from 1e-300 to 1e300.
+TEST(InlineAtan, Atan2WithinFourUlpsOfTheLibrary)
+{
+  Draw d(5);
+  double worst = 0.0;
+  for (int n = 0; n < 200000; ++n) {
+    const double scale = d.log_uniform(1e-300, 1e300);
+    const double y = scale * d.uniform(0.0, 1.0), x = scale * d.uniform(-1.0, 1.0);
+    if (y == 0.0 && x == 0.0) continue;
+    worst = std::max(worst, ulps(atan2_nonnegative_inline(y, x), std::atan2(y, x)));
+  }
+  EXPECT_LE(worst, 4.0);
+  EXPECT_EQ(atan2_nonnegative_inline(0.0, 1.0), 0.0);
+  EXPECT_LE(ulps(atan2_nonnegative_inline(1.0, 0.0), std::atan2(1.0, 0.0)), 1.0);
+  EXPECT_LE(ulps(atan2_nonnegative_inline(0.0, -1.0), std::atan2(0.0, -1.0)), 1.0);
+}
+
+// Contacts in overlap now and a step ago that leave it within the coming step (the vectorised
+// contact loop's exits): normal_force()'s exit from the oscillator and free flight, to the
+// rounding of its (g2 - 2 g1 + g0) / dt^2 (the inline atan2 and exp within a few ulps); the
+// saturated film and the energy as sustained contacts.
+TEST(ContactExit, EqualsNormalForceWhereItApplies)
+{
+  Draw d(13);
+  int exits = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    Coefficients c;
+    c.e_dry = d.log_uniform(1e-3, 1.0);
+    c.n_contact = d.log_uniform(1.6, 64.0);
+    const bool grid = trial % 3 == 0;
+    if (trial % 4 != 0) draw_film(d, grid, c);
+    ASSERT_EQ(validate(c), "");
+    const double dt = d.log_uniform(1e-8, 1e-2);
+    const NormalModel m = make_normal_model(c, Partner::particle, dt);
+    for (int state = 0; state < 100; ++state) {
+      const auto [radius, mass] = draw_pair(d);
+      const double gap = -radius.value * d.log_uniform(1e-9, 0.2);
+      // Separating: from creeping to leaving the overlap within the step.
+      const double u_n = -gap / dt * d.log_uniform(1e-3, 3.0);
+      const double g0 = gap - u_n * dt;
+      if (!leaves_overlap(m.step, gap, g0)) continue;
+      ++exits;
+      const NormalForce vector_form = grid ? overlap_exit_force<true>(m, gap, radius, mass, u_n)
+                                           : overlap_exit_force<false>(m, gap, radius, mass, u_n);
+      const NormalForce expected = normal_force(m, gap, radius, mass, u_n);
+      const double terms = mass * (std::fabs(g0) + 2.0 * std::fabs(gap) + std::fabs(u_n) * dt) / (dt * dt);
+      ASSERT_NEAR(vector_form.contact, expected.contact, 1e-13 * terms) << "gap " << gap << " u_n dt " << u_n * dt;
+      ASSERT_DOUBLE_EQ(vector_form.energy, expected.energy);
+      ASSERT_NEAR(vector_form.lubrication, expected.lubrication, film_rounding(m, radius, dt));
+    }
+  }
+  EXPECT_GT(exits, 2000);
 }
 
 // The shear film of the vectorised film loop against shear_film_force(), over gaps in and out of

@@ -159,8 +159,13 @@ def test_dense_bed_with_contacts_never_gains(lmp, packings, bed, st, dt_ru):
                                               dt_for(dt_ru), 1000, every=10))
     energy = assert_bounded(rows, rows[0, 2] + rows[0, 3] + rows[0, 4])
     assert energy[-1] <= energy[0]
-    if bed == "gapped":
-        assert rows[:, 4].any()    # contacts did form
+    # Contacts did form in the gapped bed, except where its 1000 steps last only 0.5 R_min / U
+    # and the films (St <= 0.1) nearly stop every approach: there whether one contact forms
+    # depends on the packing, which the plugin builds anew each session (a change of rounding
+    # anywhere in the dry contact gives another packing: contacts in 17 and 68 of the 100
+    # samples with one, none with another; at St >= 10 or 10 times that time, 96-100 with both).
+    if bed == "gapped" and (st >= 10.0 or dt_ru >= 5e-3):
+        assert rows[:, 4].any()
 
 
 @pytest.mark.parametrize("bed,st,dt_ru", [("gapped", 1e-3, 5e-3), ("gapped", 0.1, 5e-3),

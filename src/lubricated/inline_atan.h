@@ -1,0 +1,41 @@
+// atan2 without branches or calls, so that loops over pairs that need it can be vectorised by
+// the compiler (std::atan2 is a call): the exit time of contacts that leave the overlap within a
+// step (normal_model.h, overlap_exit_force). In scalar code libm's is faster.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+namespace lubricated {
+
+namespace detail {
+
+// atan(u) / u = 1 - u^2/3 + u^4/5 - ..., to u^38 (|u| <= tan(pi/8): the next term is below
+// 3e-17 of the sum), unrolled at compile time.
+template <int N, int LAST> __attribute__((always_inline)) inline double atan_series(double z)
+{
+  if constexpr (N > LAST)
+    return 0.0;
+  else
+    return 1.0 / (2 * N + 1) - z * atan_series<N + 1, LAST>(z);
+}
+
+}    // namespace detail
+
+// atan2(y, x) in [0, pi] for y >= 0 (not both 0), within a few units in the last place of
+// std::atan2: t = min(|x|, y) / max(|x|, y) in [0, 1]; above tan(pi/8), atan t = pi/4 +
+// atan((t - 1) / (t + 1)); then mirrored about pi/4 where y > |x| and about pi/2 where x < 0.
+__attribute__((always_inline)) inline double atan2_nonnegative_inline(double y, double x)
+{
+  constexpr double pi = 3.14159265358979323846, quarter_pi = 0.78539816339744830962;
+  constexpr double tan_eighth_pi = 0.41421356237309504880;
+  const double ax = std::fabs(x), big = std::max(ax, y), small = std::min(ax, y);
+  const double t = small / big;
+  const bool reduced = t > tan_eighth_pi;
+  const double u = reduced ? (t - 1.0) / (t + 1.0) : t;
+  const double a = (reduced ? quarter_pi : 0.0) + u * detail::atan_series<0, 19>(u * u);
+  const double in_first = y > ax ? 0.5 * pi - a : a;
+  return x < 0.0 ? pi - in_first : in_first;
+}
+
+}    // namespace lubricated
