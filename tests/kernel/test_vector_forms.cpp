@@ -55,6 +55,27 @@ DrawnPair draw_pair(Draw &d)
   return {film_radius_pair(ri, rj), d.log_uniform(1e-12, 1.0)};
 }
 
+// An exact contact model of trial `trial` (a film on three trials in four, with a grid spacing on
+// one in three), at least min_steps steps per contact, and its time step.
+struct DrawnModel {
+  Coefficients coefficients;
+  NormalModel model;
+  double dt;
+  bool grid;
+};
+DrawnModel draw_contact_model(Draw &d, int trial, double min_steps)
+{
+  DrawnModel drawn;
+  Coefficients &c = drawn.coefficients;
+  c.e_dry = d.log_uniform(1e-3, 1.0);
+  c.n_contact = d.log_uniform(min_steps, 64.0);
+  drawn.grid = trial % 3 == 0;
+  if (trial % 4 != 0) draw_film(d, drawn.grid, c);
+  drawn.dt = d.log_uniform(1e-8, 1e-2);
+  if (validate(c).empty()) drawn.model = make_normal_model(c, Partner::particle, drawn.dt);
+  return drawn;
+}
+
 // normal_force takes the film over a step as a difference of film integrals P, sums of terms
 // of order 1: its rounding is about 1e-16 of those terms (as a force), however close the two
 // ends of the step; the forms here differ from it by that and by the inline logarithm.
@@ -167,14 +188,11 @@ TEST(SustainedContact, EqualsNormalForceWhereItApplies)
   Draw d(11);
   int sustained_count = 0, other_count = 0;
   for (int trial = 0; trial < 400; ++trial) {
-    Coefficients c;
-    c.e_dry = d.log_uniform(1e-3, 1.0);
-    c.n_contact = d.log_uniform(1.0, 64.0);
-    const bool grid = trial % 3 == 0;
-    if (trial % 4 != 0) draw_film(d, grid, c);
-    ASSERT_EQ(validate(c), "");
-    const double dt = d.log_uniform(1e-8, 1e-2);
-    const NormalModel m = make_normal_model(c, Partner::particle, dt);
+    const DrawnModel drawn = draw_contact_model(d, trial, 1.0);
+    ASSERT_EQ(validate(drawn.coefficients), "");
+    const NormalModel &m = drawn.model;
+    const double dt = drawn.dt;
+    const bool grid = drawn.grid;
     for (int state = 0; state < 100; ++state) {
       const auto [radius, mass] = draw_pair(d);
       const double gap = -radius.value * d.log_uniform(1e-9, 0.2);
@@ -258,14 +276,11 @@ TEST(ContactExit, EqualsNormalForceWhereItApplies)
   Draw d(13);
   int exits = 0;
   for (int trial = 0; trial < 400; ++trial) {
-    Coefficients c;
-    c.e_dry = d.log_uniform(1e-3, 1.0);
-    c.n_contact = d.log_uniform(1.6, 64.0);
-    const bool grid = trial % 3 == 0;
-    if (trial % 4 != 0) draw_film(d, grid, c);
-    ASSERT_EQ(validate(c), "");
-    const double dt = d.log_uniform(1e-8, 1e-2);
-    const NormalModel m = make_normal_model(c, Partner::particle, dt);
+    const DrawnModel drawn = draw_contact_model(d, trial, 1.6);
+    ASSERT_EQ(validate(drawn.coefficients), "");
+    const NormalModel &m = drawn.model;
+    const double dt = drawn.dt;
+    const bool grid = drawn.grid;
     for (int state = 0; state < 100; ++state) {
       const auto [radius, mass] = draw_pair(d);
       const double gap = -radius.value * d.log_uniform(1e-9, 0.2);
