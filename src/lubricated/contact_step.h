@@ -25,6 +25,8 @@
 // the duration is what the time step can resolve.
 #pragma once
 
+#include "inline_atan.h"
+#include "inline_exp.h"
 #include "spring_dashpot.h"
 
 #include <algorithm>
@@ -261,17 +263,29 @@ inline ContactStep make_contact_step(const SpringDashpot &sd, double dt, const C
   return cs;
 }
 
-// Gap after time t, starting in overlap or at contact (g <= 0) with rate v; once the gap
-// reopens the motion continues in free flight with the exit speed.
 // Gap after time t for a contact (g < 0) known to reopen within t: w s = atan2(-A, B) at the
 // exit, where cos = B / rho and sin = -A / rho, so the exit speed is exp(-a s) w rho; free
 // flight after that.
-inline double exit_and_fly(const ContactStep &cs, double A, double B, double t)
+// INLINE: atan2 and exp without calls, for loops the compiler vectorises (normal_model.h,
+// overlap_exit_force); libm's in scalar code, where they are faster.
+template <bool INLINE = false>
+__attribute__((always_inline)) inline double exit_and_fly(const ContactStep &cs, double A, double B, double t)
 {
-  const double s = std::atan2(-A, B) / cs.omega;
-  return std::exp(-cs.decay_rate * s) * cs.omega * std::sqrt(A * A + B * B) * (t - s);
+  const double s = (INLINE ? atan2_nonnegative_inline(-A, B) : std::atan2(-A, B)) / cs.omega;
+  const double decay = INLINE ? exp_inline(-cs.decay_rate * s) : std::exp(-cs.decay_rate * s);
+  return decay * cs.omega * std::sqrt(A * A + B * B) * (t - s);
 }
 
+// Gap a step ahead of a contact in overlap now (g1) and a step ago (g0) whose recurrence leaves
+// the overlap within the step (S > 0): the oscillator through g0 and g1 exits and flies on.
+template <bool INLINE = false>
+__attribute__((always_inline)) inline double exit_gap(const ContactStep &cs, double g1, double g0)
+{
+  return exit_and_fly<INLINE>(cs, g1, (g1 * cs.C - g0 * cs.E) / cs.S, cs.dt);
+}
+
+// Gap after time t, starting in overlap or at contact (g <= 0) with rate v; once the gap
+// reopens the motion continues in free flight with the exit speed.
 inline double propagate_contact(const ContactStep &cs, double g, double v, double t)
 {
   const double a = cs.decay_rate, w = cs.omega;
@@ -357,7 +371,7 @@ __attribute__((noinline)) inline double contact_acceleration(const ContactStep &
   } else {
     // Sustained contact: the exact two-step recurrence of the damped oscillator.
     g2 = recurrence_gap(cs, g1, g0);
-    if (g2 >= 0.0 && cs.S > 1e-12) g2 = exit_and_fly(cs, g1, (g1 * cs.C - g0 * cs.E) / cs.S, dt);
+    if (g2 >= 0.0 && cs.S > 1e-12) g2 = exit_gap(cs, g1, g0);
   }
   return (g2 - 2.0 * g1 + g0) / (dt * dt);
 }

@@ -15,8 +15,6 @@
 
 #include "coefficients.h"
 #include "contact_step.h"
-#include "inline_atan.h"
-#include "inline_exp.h"
 #include "lubrication.h"
 #include "spring_dashpot.h"
 
@@ -261,7 +259,7 @@ __attribute__((always_inline)) inline NormalForce sustained_contact_force(const 
 }
 
 // Whether a contact in overlap now (g1) and a step ago (g0) leaves the overlap within the coming
-// step: contact_acceleration's exit from the oscillator (contact_step.h, exit_and_fly).
+// step: contact_acceleration's exit from the oscillator (contact_step.h, exit_gap).
 inline bool leaves_overlap(const ContactStep &cs, double g1, double g0)
 {
   return (g1 < 0.0) & (g0 < 0.0) & (recurrence_gap(cs, g1, g0) >= 0.0) & (cs.S > 1e-12);
@@ -269,9 +267,9 @@ inline bool leaves_overlap(const ContactStep &cs, double g1, double g0)
 
 // normal_force() (exact integration, a step) for a contact that leaves_overlap(): the exit and
 // free flight after it, and the saturated film of the step in overlap (as sustained_contact_force).
-// Without branches or calls (atan2_nonnegative_inline, exp_inline), for loops the compiler
-// vectorises over such contacts alone (every lane pays the exit's arithmetic); equal to
-// normal_force() within rounding. GRID: whether the film has a grid spacing.
+// Without branches or calls (exit_gap<true>), for loops the compiler vectorises over such
+// contacts alone (every lane pays the exit's arithmetic); equal to normal_force() within
+// rounding. GRID: whether the film has a grid spacing.
 template <bool GRID> __attribute__((always_inline)) inline NormalForce
 overlap_exit_force(const NormalModel &m, double gap, const FilmRadius &radius, double reduced_mass, double u_n)
 {
@@ -279,11 +277,7 @@ overlap_exit_force(const NormalModel &m, double gap, const FilmRadius &radius, d
   bool sustained;
   NormalForce f = sustained_contact_force<GRID>(m, gap, radius, reduced_mass, u_n, sustained);
   const double g0 = gap - u_n * cs.dt;
-  // exit_and_fly(cs, A, B, dt): g(s) = exp(-a s) (A cos ws + B sin ws) from now, A = g1 < 0.
-  const double A = gap, B = (gap * cs.C - g0 * cs.E) / cs.S;
-  const double s = atan2_nonnegative_inline(-A, B) / cs.omega;
-  const double g2 = exp_inline(-cs.decay_rate * s) * cs.omega * std::sqrt(A * A + B * B) * (cs.dt - s);
-  f.contact = reduced_mass * ((g2 - 2.0 * gap + g0) / (cs.dt * cs.dt));
+  f.contact = reduced_mass * ((exit_gap<true>(cs, gap, g0) - 2.0 * gap + g0) / (cs.dt * cs.dt));
   return f;
 }
 

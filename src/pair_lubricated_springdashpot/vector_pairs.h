@@ -34,10 +34,10 @@ struct Atoms {
 void film_only(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i, const int *pair_j, int n,
                double *fpair, double *film, double *capacity);
 
-// Pairs that may touch within the step (done: 0, 1 or 2 as doubles): done[c] = 1 where pair c is in sustained contact or
-// stays apart over the step (the film alone), with its fpair and spring energy[c]; 2 where it
-// leaves the overlap within the step (for contact_exits), 0 where a contact starts or ends
-// otherwise, for the general loop (fpair, energy 0 for both).
+// Pairs that may touch within the step (done as doubles): done[c] = 1 where pair c is in
+// sustained contact or stays apart over the step (the film alone), with its fpair and spring
+// energy[c]; 2 where it leaves the overlap within the step (for contact_exits), 0 where a
+// contact starts or ends otherwise, for the general loop (fpair, energy 0 for both).
 void contact_or_film(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i, const int *pair_j,
                      int n, double *fpair, double *film, double *capacity, double *energy, double *done);
 
