@@ -159,6 +159,22 @@ def build(workdir, phi, seed=1, n=N_ATOMS, compress_steps=10000, quenches=100):
     return workdir / "packing.data", results["relaxed"][0]
 
 
+# The packings the tests run on (PACKINGS: name and solid fraction), built by build() with the
+# plugin at b70aa61 and kept in tests/lammps/dense_packings/: the dry compression is chaotic, so
+# any change in the plugin's rounding builds other packings, and a test's outcome must not hang
+# on the rounding of the code under test (a rebuild after b70aa61 put a 0.1 mm sphere under a
+# 0.57 mm one at the floor of the walled bed, see test_dense_packings.py). `python
+# tools/dense_packings.py DIR` builds them anew with the current plugin, to run the tests on
+# other realisations (LUBRICATED_PLUGIN picks another build).
+PACKINGS = {"p70": 0.70, "p65": 0.65, "p46": 0.46, "p61": 0.61}
+PINNED = lammps_run.ROOT / "tests" / "lammps" / "dense_packings"
+
+
+def pinned(name):
+    """The kept packing `name` (a key of PACKINGS): its data file as write_data wrote it."""
+    return PINNED / f"{name}.data"
+
+
 def gapped(path, out, margin=0.004):
     """Shrink every radius of a relaxed packing by one factor so that the closest pair is apart by
     margin times its radius sum; returns the new solid fraction."""
@@ -306,3 +322,15 @@ fix tau all ave/time 1 1 1 v_tau v_p ave running
 run {steps - start}
 print "RESULT final $(f_tau[1]:%.10g) $(f_tau[2]:%.10g) $(atoms) $(ke:%.10g)"
 """
+
+
+if __name__ == "__main__":
+    import shutil
+    import sys
+
+    target = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else PINNED)
+    target.mkdir(parents=True, exist_ok=True)
+    for name, phi in PACKINGS.items():
+        built, largest = build(lammps_run.BUILD / "dense-packings-build" / name, phi)
+        shutil.copy(built, target / f"{name}.data")
+        print(f"{name}: solid fraction {phi}, largest net force {largest:.3g} N -> {target / (name + '.data')}")

@@ -281,6 +281,28 @@ overlap_exit_force(const NormalModel &m, double gap, const FilmRadius &radius, d
   return f;
 }
 
+// normal_force() (exact integration, a step) of a model without an entry loss (!m.calibrated())
+// for a pair apart now or a step ago and within a step of contact: a contact that starts within
+// the coming step or started or ended within the last one (event_acceleration_inline), with the
+// film's path integral over the step (film_force_apart's, valid along any path) and its kick.
+// Without branches or calls, for loops the compiler vectorises over such pairs; resolved as
+// event_acceleration_inline (where false, take normal_force()). reduced_mass > 0; WET: whether
+// the film is active, GRID: whether it has a grid spacing.
+template <bool WET, bool GRID>
+__attribute__((always_inline)) inline NormalForce contact_event_force(const NormalModel &m, double gap,
+                                                                      const FilmRadius &radius, double reduced_mass,
+                                                                      double u_n, bool &resolved)
+{
+  const ContactStep &cs = m.step;
+  NormalForce f;
+  const double k = reduced_mass * m.contact.stiffness_per_mass;
+  f.energy = gap < 0.0 ? 0.5 * k * gap * gap : 0.0;
+  f.lubrication = WET ? film_force_apart<GRID>(m.lubrication, gap, radius, reduced_mass, u_n, cs.dt, cs.inv_dt) : 0.0;
+  const double kick = gap - u_n * cs.dt >= 0.0 ? f.lubrication * cs.dt / reduced_mass : 0.0;
+  f.contact = reduced_mass * event_acceleration_inline(cs, gap, u_n, kick, resolved);
+  return f;
+}
+
 inline NormalForce normal_force(const NormalModel &m, double gap, double radius, double reduced_mass, double u_n,
                                 Evaluation when = Evaluation::step)
 {

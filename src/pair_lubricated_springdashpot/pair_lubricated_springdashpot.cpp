@@ -230,8 +230,10 @@ void PairLubricatedSpringDashpot::init_style()
       uniform_models = uniform_models && std::equal(first, first + lub::Coefficients::packed_size, other);
     }
   if (vector_loops && comm->me == 0)
-    utils::logmesg(lmp, "{}: pairs in sustained contact{} take vectorised loops\n", STYLE,
-                   any_wet ? " and pairs apart over a step" : "");
+    utils::logmesg(lmp,
+                   "{}: pairs in sustained contact{}, and contacts that start or end within a step (without "
+                   "legendre), take vectorised loops\n",
+                   STYLE, any_wet ? " or apart over a step" : "");
   if (film_loops && any_wet && comm->me == 0)
     utils::logmesg(lmp, "{}: pairs apart over a step take the vectorised film loop\n", STYLE);
   if (film_loops && history && comm->me == 0)

@@ -199,6 +199,28 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
         apply(exit_i[c], exit_j[c], fpair[c], energy[c]);
       if (budget && model.lubrication.active()) record_films(exit_i, exit_j, nexit);
     }
+    // Contacts that start or end (no entry loss): their own loop, the pairs it leaves (whose
+    // root needs more than one Newton step) through the general loop.
+    int *event_i = exit_i, *event_j = exit_j;
+    if (nrest > 0 && !model.calibrated()) {
+      for (int k = 0; k < nrest; k++)
+        event_i[k] = pair_i[rest[k]], event_j[k] = pair_j[rest[k]];
+      if (atoms.inverse_mass)
+        vector_pairs::contact_events_by_inverse(atoms, model, event_i, event_j, nrest, fpair, film, capacity, energy,
+                                                done);
+      else
+        vector_pairs::contact_events(atoms, model, event_i, event_j, nrest, fpair, film, capacity, energy, done);
+      int nleft = 0;
+      for (int c = 0; c < nrest; c++) {
+        apply(event_i[c], event_j[c], fpair[c], energy[c]);
+        rest[nleft] = c;
+        nleft += done[c] == 0.0;
+      }
+      if (budget && model.lubrication.active()) record_films(event_i, event_j, nrest);
+      for (int k = 0; k < nleft; k++)
+        evaluate(event_i[rest[k]], event_j[rest[k]], 0);
+      return;
+    }
     for (int k = 0; k < nrest; k++)
       evaluate(pair_i[rest[k]], pair_j[rest[k]], 0);
   };

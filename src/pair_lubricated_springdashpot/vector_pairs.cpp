@@ -111,6 +111,35 @@ contact_exit_loop(const Atoms &atoms, const lub::NormalModel &model, const int *
   }
 }
 
+// Kept pairs where a contact starts or ends (contact_or_film's done = 0) of a model without an
+// entry loss: done[c] = 1 with contact_or_film's outputs where lub::contact_event_force resolves
+// pair c (or neither atom moves: no force), else 0 for the general loop (outputs 0).
+template <bool WET, bool GRID, bool INVERSE> __attribute__((always_inline)) static inline void
+contact_event_loop(const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
+                   const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
+                   double *__restrict capacity, double *__restrict energy, double *__restrict done)
+{
+  // Local copies (as film_shear_only_loop): no store can alias them, so their loads (the guess
+  // tables' pointers among them) leave the loop.
+  const Atoms local = atoms;
+  const lub::NormalModel local_model = model;
+  for (int c = 0; c < n; c++) {
+    const Geometry g = geometry<INVERSE>(local, pair_i[c], pair_j[c]);
+    bool resolved;
+    const lub::NormalForce f =
+        lub::contact_event_force<WET, GRID>(local_model, g.r - g.radsum, g.film, g.m_e, g.u_n, resolved);
+    // Whether the pair moves as a double (a bool of m_e > 0 stops GCC 12 vectorising the loop
+    // with inverse masses); a pair neither of whose atoms moves is done without a force.
+    const double moving = g.m_e > 0.0 ? 1.0 : 0.0;
+    const bool known = resolved & (moving != 0.0) & (g.r > 0.0);
+    fpair[c] = known ? f.total() * g.rinv : 0.0;
+    film_force[c] = WET & known ? f.lubrication : 0.0;
+    capacity[c] = lub::film_capacity(g.m_e, g.u_n);
+    energy[c] = known ? f.energy : 0.0;
+    done[c] = g.r > 0.0 ? (resolved ? 1.0 : 1.0 - moving) : 0.0;
+  }
+}
+
 template <bool GRID, bool INVERSE> __attribute__((always_inline)) static inline void
 film_shear_only_loop(const Atoms &atoms, const lub::ContactModel &model, const int *__restrict pair_i,
                      const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
@@ -349,6 +378,32 @@ void contact_exits_by_inverse(const Atoms &atoms, const lub::NormalModel &model,
     contact_exit_loop<true, true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
   else
     contact_exit_loop<true, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
+}
+
+VECTOR_PAIRS_CLONES
+void contact_events(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n,
+                    double *fpair, double *film, double *capacity, double *energy, double *done)
+{
+  const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
+  if (!wet)
+    contact_event_loop<false, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  else if (grid)
+    contact_event_loop<true, true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  else
+    contact_event_loop<true, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+}
+
+VECTOR_PAIRS_CLONES
+void contact_events_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j,
+                               int n, double *fpair, double *film, double *capacity, double *energy, double *done)
+{
+  const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
+  if (!wet)
+    contact_event_loop<false, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  else if (grid)
+    contact_event_loop<true, true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  else
+    contact_event_loop<true, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
 }
 
 #define SHEAR_OUTPUTS(o)                                                                                               \

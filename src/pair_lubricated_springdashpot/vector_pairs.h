@@ -45,6 +45,16 @@ void contact_or_film(const Atoms &atoms, const lubricated::NormalModel &model, c
 void contact_exits(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i, const int *pair_j,
                    int n, double *fpair, double *film, double *capacity, double *energy);
 
+// Pairs that contact_or_film marked 0 (a contact starts within the step, or started or ended
+// within the last one) of a model without an entry loss (!model.calibrated()): done[c] = 1 with
+// its outputs where lubricated::contact_event_force resolves pair c, else 0 (for the general
+// loop; outputs 0).
+void contact_events(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i, const int *pair_j,
+                    int n, double *fpair, double *film, double *capacity, double *energy, double *done);
+void contact_events_by_inverse(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
+                               const int *pair_j, int n, double *fpair, double *film, double *capacity, double *energy,
+                               double *done);
+
 // The same with m_e from atoms.inverse_mass (a pair of two immovable atoms: all 0, done).
 void contact_exits_by_inverse(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i,
                               const int *pair_j, int n, double *fpair, double *film, double *capacity, double *energy);

@@ -108,6 +108,8 @@ VECTOR_CASES = {
     # one model for all type pairs
     "wet": "pair_coeff * * 0.8 ncontact 8 {film}",
     "dry": "pair_coeff * * 0.8 ncontact 8",
+    # the entry loss: contacts that start or end take the general loop
+    "wet legendre": "pair_coeff * * 0.8 ncontact 8 {film} legendre 35",
     # a model per type pair, dry and wet mixed: grouped by type pair
     "mixed": "pair_coeff 1 1 0.8 ncontact 8 {film}\npair_coeff 1 2 0.6 ncontact 6\n"
              "pair_coeff 2 2 0.9 ncontact 10 viscosity {mu2} grid 1e-4",
@@ -122,9 +124,10 @@ VECTOR_CASES = {
 
 @pytest.mark.parametrize("case", VECTOR_CASES)
 def test_vectorised_loops_agree_with_the_general_loop(lmp, case):
-    """Pairs in sustained contact and pairs apart over a step (the film alone) take vectorised
-    loops, by default; `pair_style lubricated/springdashpot vector no` takes every pair through
-    the general loop. Same trajectories, spring energy and virial."""
+    """Pairs in sustained contact, contacts that start or end within a step (without legendre)
+    and pairs apart over a step (the film alone) take vectorised loops, by default; `pair_style
+    lubricated/springdashpot vector no` takes every pair through the general loop. Same
+    trajectories, spring energy and virial."""
     mu = scenes.viscosity_for_stokes(100)
     small_spheres_type_2 = "\n".join(f"set atom {k} type 2" for k in range(2, 9, 2))
     coefficients = VECTOR_CASES[case].format(film=f"viscosity {mu} activation 0.09375", mu2=2 * mu)

@@ -2,7 +2,9 @@
 the general loop's results (`pair_style lubricated/springdashpot vector no`) on dense frictional
 beds, dry and wet, with the film budget binding (`limit atom`, strong films) and without it
 (`limit pair`), with and without the shear film, with a fixed activation and a grid, on 1 and 2
-ranks.
+ranks. So do the frictionless loops (contact_or_film, contact_exits and contact_events: contacts
+that start or end within a step, 0.07-0.3 per sphere and step here) on the same beds without
+friction.
 
 The bed: 256 spheres of radii 0.99-1.0 mm (from a hash of the atom ID) on a periodic fcc lattice
 compressed to 0.995 of 2 mm, so that most neighbours overlap (sustained contacts) and some pairs
@@ -36,6 +38,13 @@ CASES = {
     # loop on 1 and 2 ranks differs by 100 % after 120 steps): a weak film, the shear film with a
     # fixed eps_al
     "wet activation limit pair": "viscosity 1e-3 activation 0.1 friction 0.3",
+}
+
+# Without friction: the sustained contacts, the films and the contacts that start or end.
+FRICTIONLESS = {
+    "dry": "",
+    "wet grid": "viscosity 0.3 grid 1.25e-4",
+    "wet activation limit pair": "viscosity 1e-3 activation 0.1",
 }
 
 # A hash of the atom ID in [0, 1) (the same on any number of ranks, unlike random()).
@@ -86,17 +95,27 @@ print "RESULT energies $(ke:%.17g) $(c_rot:%.17g) $(pe:%.17g) $(press:%.17g) $(c
               f'$(v_sz[{k}]:%.17g)"\n' for k in range(1, 257, 15))
 
 
+# Each case's coefficients and the log line that says its vectorised loops run.
+LOOPS = {**{case: (c, "pairs in sustained frictional contact take a vectorised loop") for case, c in CASES.items()},
+         **{f"{case} frictionless": (c, "contacts that start or end within a step (without legendre), take "
+                                        "vectorised loops") for case, c in FRICTIONLESS.items()}}
+
+
 @pytest.mark.parametrize("nprocs", [1, 2])
-@pytest.mark.parametrize("case", CASES)
-def test_friction_loop_agrees_with_the_general_loop(lmp, case, nprocs):
+@pytest.mark.parametrize("case", LOOPS)
+def test_vectorised_loops_agree_with_the_general_loop(lmp, case, nprocs):
+    """The bed with the vectorised loops and with the general loop alone: the same results to
+    rounding."""
+    coefficients, logged = LOOPS[case]
     limit = "pair" if "limit pair" in case else "atom"
-    vectorised = lmp(bed(CASES[case], limit, True), nprocs=nprocs)
-    assert "pairs in sustained frictional contact take a vectorised loop" in lmp.log
+    vectorised = lmp(bed(coefficients, limit, True), nprocs=nprocs)
+    assert logged in lmp.log
     assert dense_scenes.ranks(lmp.log) == {nprocs}
-    general = lmp(bed(CASES[case], limit, False), nprocs=nprocs)
+    general = lmp(bed(coefficients, limit, False), nprocs=nprocs)
     assert "vectorised" not in lmp.log
     ke, rot, pe, press, contacts = vectorised["energies"]
-    # A dense bed: most spheres in several sustained contacts throughout; friction turns them.
+    # A dense bed: most spheres in several sustained contacts throughout; they spin (imposed
+    # spins, which friction changes).
     assert contacts > 3.0 and rot > 0.0 and pe > 0.0
     assert vectorised.keys() == general.keys()
     for key in vectorised:

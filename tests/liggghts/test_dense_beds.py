@@ -172,17 +172,17 @@ def test_compression_to_solid_fraction_070(run, packings, dt, steps):
 
 @pytest.fixture(scope="module")
 def packings():
-    """The LAMMPS tests' random 1:10 packings (300 spheres, radii 0.1-1 mm), built by the LAMMPS
-    plugin, with random velocities (rms 0.01 m/s, in the data files): LIGGGHTS reads them.
+    """The LAMMPS tests' random 1:10 packings (300 spheres, radii 0.1-1 mm; kept, see
+    tools/dense_packings.py, PINNED), with random velocities (rms 0.01 m/s, in the data files): LIGGGHTS reads them.
     preloaded: solid fraction 0.70, 592 sustained contacts; gapped: 0.642, every pair apart,
     4.6 film neighbours per sphere (tests/lammps/test_dense_packings.py)."""
     if not lammps_run.PLUGIN.exists():
         pytest.skip(f"{lammps_run.PLUGIN} is missing: run 'make build'")
     root = ROOT / "build" / "test-scratch-liggghts" / "packings"
-    preloaded, _ = dense_packings.build(root / "p70", 0.70)
-    relaxed, _ = dense_packings.build(root / "p65", 0.65)
-    dense_packings.gapped(relaxed, root / "gapped.data")
-    loose, _ = dense_packings.build(root / "p46", 0.46)
+    root.mkdir(parents=True, exist_ok=True)
+    preloaded = dense_packings.pinned("p70")
+    dense_packings.gapped(dense_packings.pinned("p65"), root / "gapped.data")
+    loose = dense_packings.pinned("p46")
     return {"preloaded": dense_packings.with_velocities(preloaded, root / "preloaded_v.data"),
             "gapped": dense_packings.with_velocities(root / "gapped.data", root / "gapped_v.data"),
             "loose46": loose}
