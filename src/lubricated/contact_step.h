@@ -465,14 +465,15 @@ inline bool contact_possible(double g1, double u, double dt)
   return g1 < std::fabs(u) * dt;
 }
 
-// contact_acceleration() without an entry loss for a step where a contact starts or ends: apart
-// now or a step ago (g1 >= 0 or g0 >= 0). Without branches or calls (inline exp, sin, cos and
-// atan2), for loops the compiler vectorises over such pairs; every lane pays for the three cases.
-// The entry or exit time within the last step is falling_root's first Newton step from the
-// tabulated guess, which meets its tolerance in nearly every such step (in all 1.1e6 of the
-// 2000-sphere bench beds, in 95 % of the kernel test's random draws); resolved = false where it
-// does not, or where the pair is in overlap now and a step ago: take contact_acceleration()
-// there. Otherwise equal to it within rounding.
+// contact_acceleration() without an entry loss, for loops the compiler vectorises over the steps
+// where a contact starts or ends (apart now or a step ago: g1 >= 0 or g0 >= 0; every lane pays
+// for the three cases), without branches or calls (inline exp, sin, cos and atan2). Contacts in
+// overlap now and a step ago (sustained, or leaving the overlap within the step) are resolved
+// too, at little more cost (for loops over every kind of pair). The entry or exit time within
+// the last step is falling_root's first Newton step from the tabulated guess, which meets its
+// tolerance in nearly every such step (in all 1.1e6 of the 2000-sphere bench beds, in 95 % of
+// the kernel test's random draws); resolved = false where it does not: take
+// contact_acceleration() there. Otherwise equal to it within rounding.
 __attribute__((always_inline)) inline double event_acceleration_inline(const ContactStep &cs, double g1, double u,
                                                                        double kick, bool &resolved)
 {
@@ -516,19 +517,24 @@ __attribute__((always_inline)) inline double event_acceleration_inline(const Con
 
   // A contact that started s into the last step: the oscillator there, moved from x to s to first
   // order (as contact_acceleration), its velocity now stopped by the kick at most, then a whole
-  // step (E, C, S), leaving the overlap on the way (exit_and_fly) if it does.
+  // step (E, C, S), leaving the overlap on the way (exit_and_fly) if it does. In overlap a step
+  // ago too: the recurrence, or the exit (exit_gap's B) where it leaves the overlap.
   const double shift = s - x;
   const double decay_s = decay_x * (1.0 - a * shift);
   const double sin_s = sin_x + w * shift * cos_x, cos_s = cos_x - w * shift * sin_x;
   const double v_in = s < 0.5 * dt ? -g0 / (dt - s) : g1 * w / (decay_s * sin_s);
   const double v1 = v_in * decay_s * (cos_s - a / w * sin_s);
   const double stop = v1 < 0.0 ? std::min(std::max(kick, 0.0), -v1) : std::max(std::min(kick, 0.0), -v1);
-  const double B = (v1 + stop + a * g1) / w;
-  const double in_overlap = cs.E * (g1 * cs.C + B * cs.S);
-  const double g2 = in_overlap < 0.0 ? in_overlap : exit_and_fly<true>(cs, g1, B, dt);
+  const double B = entered ? (v1 + stop + a * g1) / w : (g1 * cs.C - g0 * cs.E) / cs.S;
+  const double in_overlap = entered ? cs.E * (g1 * cs.C + B * cs.S) : recurrence_gap(cs, g1, g0);
+  const bool flies = (in_overlap >= 0.0) & (entered | (cs.S > 1e-12));
+  const double g2 = flies ? exit_and_fly<true>(cs, g1, B, dt) : in_overlap;
   const double entry = (g2 - 2.0 * g1 + g0) / (dt * dt) - kick / dt;
+  const bool overlapping = (g1 < 0.0) & (g0 < 0.0);
+  const double overlap = in_overlap < 0.0 ? sustained_acceleration(cs, g1, u) : (g2 - 2.0 * g1 + g0) / (dt * dt);
+  resolved = resolved | overlapping;
 
-  const double acceleration = exited ? exit : entered ? entry : approach;
+  const double acceleration = exited ? exit : entered ? entry : overlapping ? overlap : approach;
   return contact_possible(g1, u, dt) ? acceleration : 0.0;
 }
 

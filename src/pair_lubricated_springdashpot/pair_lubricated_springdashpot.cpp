@@ -237,7 +237,10 @@ void PairLubricatedSpringDashpot::init_style()
   if (film_loops && any_wet && comm->me == 0)
     utils::logmesg(lmp, "{}: pairs apart over a step take the vectorised film loop\n", STYLE);
   if (film_loops && history && comm->me == 0)
-    utils::logmesg(lmp, "{}: pairs in sustained frictional contact take a vectorised loop\n", STYLE);
+    utils::logmesg(lmp,
+                   "{}: pairs in sustained frictional contact take a vectorised loop, and contacts that start or "
+                   "end within a step (without legendre) another\n",
+                   STYLE);
 
   // The many-body film budget covers the films of these pairs and of the wet walls.
   walls.clear();

@@ -23,12 +23,14 @@ namespace LAMMPS_NS {
 
 // The vectorised loops (vector_pairs.h) over the film-only list and the kept entries, in
 // chunks that stay in the cache between computing and applying the forces; kept entries
-// where a contact starts or ends go through the general loop, evaluate(i, j, jj). Unless one
+// where a contact starts or ends take a loop of their own where the model has no entry loss,
+// else (and where that loop leaves them) the general loop, evaluate(i, j, jj). Unless one
 // model serves every pair, each chunk is first grouped by type pair (a counting sort).
 // TANGENTIAL (friction or rolling, and maybe a shear film): the film-only list with the shear
 // film, and the kept entries of type pairs with friction and without rolling resistance through
-// the sustained frictional contact loop (the others, and those not in sustained contact or new,
-// through the general loop). In steps only (the elongation advances).
+// the sustained frictional contact loop, then those it leaves (a contact that starts or ends, a
+// new one) through the frictional event loop where the model has no entry loss; the others
+// through the general loop. In steps only (the elongation advances).
 template <bool TANGENTIAL, class Evaluate> void
 PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v, double **omega, Evaluate &evaluate)
 {
@@ -46,6 +48,9 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
   double fpair[chunk], energy[chunk], film[chunk], capacity[chunk];
   double done[chunk];
   int rest[chunk], exit_i[chunk], exit_j[chunk];
+  // The pairs of the contact-event loops (kept pairs where a contact starts or ends), compacted.
+  int *const event_i = exit_i, *const event_j = exit_j;
+  int event_jj[chunk];
   const bool budget = film_budget_now;
   auto apply = [&](int i, int j, double fij, double eij) {
     const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
@@ -149,27 +154,51 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
       delta[0][c] = h[0], delta[1][c] = h[1], delta[2][c] = h[2];
       touched[c] = history->touched(pair_i[c])[pair_jj[c]] ? 1.0 : 0.0;
     }
+    // The loop's forces, torques and elongations scattered, the films' budget records (the pairs
+    // not done have no film: no record); returns how many are not done, listed in rest.
+    auto scatter = [&](const int *list_i, const int *list_j, const int *list_jj, int count)
+        __attribute__((always_inline))
+    {
+      int nrest = 0;
+      for (int c = 0; c < count; c++) {
+        // Branch-free: the pairs not done have zero forces and their history unchanged here.
+        const int i = list_i[c];
+        apply_tangential(i, list_j[c], fpair[c], force[0][c], force[1][c], force[2][c], torque_unit[0][c],
+                         torque_unit[1][c], torque_unit[2][c], energy[c], on[c]);
+        double *h = history->values(i) + 3 * list_jj[c];
+        h[0] = next[0][c], h[1] = next[1][c], h[2] = next[2][c];
+        history->touched(i)[list_jj[c]] = next_touched[c] != 0.0;
+        rest[nrest] = c;
+        nrest += on[c] == 0.0;
+      }
+      if (budget && model.normal.lubrication.active()) record_normal_and_shear_films(list_i, list_j, count);
+      return nrest;
+    };
     const vector_pairs::FrictionIn in{pair_i, pair_j, touched, delta[0], delta[1], delta[2]};
     if (atoms.inverse_mass)
       vector_pairs::friction_contacts_by_inverse(atoms, model, in, n, friction_out);
     else
       vector_pairs::friction_contacts(atoms, model, in, n, friction_out);
-    int nrest = 0;
-    for (int c = 0; c < n; c++) {
-      // Branch-free: the pairs not done have zero forces and their history unchanged here.
-      const int i = pair_i[c];
-      apply_tangential(i, pair_j[c], fpair[c], force[0][c], force[1][c], force[2][c], torque_unit[0][c],
-                       torque_unit[1][c], torque_unit[2][c], energy[c], on[c]);
-      double *h = history->values(i) + 3 * pair_jj[c];
-      h[0] = next[0][c], h[1] = next[1][c], h[2] = next[2][c];
-      history->touched(i)[pair_jj[c]] = next_touched[c] != 0.0;
-      rest[nrest] = c;
-      nrest += on[c] == 0.0;
+    int nrest = scatter(pair_i, pair_j, pair_jj, n);
+    const int *left_i = pair_i, *left_j = pair_j, *left_jj = pair_jj;
+    if (nrest > 0 && !model.normal.calibrated()) {
+      // Contacts that start or end (no entry loss) and new ones: their own loop, its inputs
+      // compacted in place (rest[k] >= k), the pairs it leaves through the general loop.
+      for (int k = 0; k < nrest; k++) {
+        const int c = rest[k];
+        event_i[k] = pair_i[c], event_j[k] = pair_j[c], event_jj[k] = pair_jj[c];
+        touched[k] = touched[c], delta[0][k] = delta[0][c], delta[1][k] = delta[1][c], delta[2][k] = delta[2][c];
+      }
+      const vector_pairs::FrictionIn events{event_i, event_j, touched, delta[0], delta[1], delta[2]};
+      if (atoms.inverse_mass)
+        vector_pairs::friction_events_by_inverse(atoms, model, events, nrest, friction_out);
+      else
+        vector_pairs::friction_events(atoms, model, events, nrest, friction_out);
+      nrest = scatter(event_i, event_j, event_jj, nrest);
+      left_i = event_i, left_j = event_j, left_jj = event_jj;
     }
-    // The films' budget records (the pairs not done have no film: no record).
-    if (budget && model.normal.lubrication.active()) record_normal_and_shear_films(pair_i, pair_j, n);
     for (int k = 0; k < nrest; k++)
-      evaluate(pair_i[rest[k]], pair_j[rest[k]], pair_jj[rest[k]]);
+      evaluate(left_i[rest[k]], left_j[rest[k]], left_jj[rest[k]]);
   };
   auto kept_pairs = [&](const lubricated::ContactModel &contact_model, const int *pair_i, const int *pair_j,
                         const int * /*pair_jj*/, int n) {
@@ -201,7 +230,6 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
     }
     // Contacts that start or end (no entry loss): their own loop, the pairs it leaves (whose
     // root needs more than one Newton step) through the general loop.
-    int *event_i = exit_i, *event_j = exit_j;
     if (nrest > 0 && !model.calibrated()) {
       for (int k = 0; k < nrest; k++)
         event_i[k] = pair_i[rest[k]], event_j[k] = pair_j[rest[k]];

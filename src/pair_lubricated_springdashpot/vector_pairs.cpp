@@ -198,10 +198,14 @@ film_shear_only_loop(const Atoms &atoms, const lub::ContactModel &model, const i
 // the tangential spring with its rotation into the tangent plane and the Coulomb cap with the
 // sliding reset (tangential_contact_force), the shear film (SHEAR, saturated); and apart over the
 // step (no contact can act): the films alone (film_force_apart, the shear film as in
-// film_shear_only) and the elongation forgotten. Every branch of the scalar kernel a select here
+// film_shear_only) and the elongation forgotten. EVENTS: the kept pairs that loop leaves (a
+// contact that starts or ends, one new since the last step) of a model without an entry loss,
+// their normal force by lub::contact_event_force (done where it resolves them), the spring where
+// in overlap from the part of the last step spent there (first_contact_fraction unless touched),
+// the elongation forgotten elsewhere. Every branch of the scalar kernel a select here
 // (-fno-trapping-math: a lane's unused division may be 0/0), in the scalar kernel's order of
 // operations; 0/1 multipliers, not bool masks, where GCC 12 would not if-convert.
-template <bool WET, bool GRID, bool SHEAR, bool INVERSE> __attribute__((always_inline)) static inline void
+template <bool WET, bool GRID, bool SHEAR, bool INVERSE, bool EVENTS> __attribute__((always_inline)) static inline void
 friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const int *__restrict pair_i,
                       const int *__restrict pair_j, const double *__restrict touched, const double *__restrict delta_x,
                       const double *__restrict delta_y, const double *__restrict delta_z, int n,
@@ -225,16 +229,19 @@ friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const 
     const int i = pair_i[c], j = pair_j[c];
     const Geometry g = geometry<INVERSE>(local, i, j);
     const double gap = g.r - g.radsum;
-    bool sustained;
+    bool sustained = false, resolved = true;
     // Dry: the film terms are 0 (six_pi_mu = 0).
-    const lub::NormalForce fn = lub::sustained_contact_force<GRID>(normal, gap, g.film, g.m_e, g.u_n, sustained);
-    const bool apart = !lub::contact_possible(gap, g.u_n, dt);
+    const lub::NormalForce fn = EVENTS
+                                    ? lub::contact_event_force<WET, GRID>(normal, gap, g.film, g.m_e, g.u_n, resolved)
+                                    : lub::sustained_contact_force<GRID>(normal, gap, g.film, g.m_e, g.u_n, sustained);
+    const bool apart = !EVENTS & !lub::contact_possible(gap, g.u_n, dt);
     const double film_apart =
-        WET ? lub::film_force_apart<GRID>(normal.lubrication, gap, g.film, g.m_e, g.u_n, dt, inv_dt) : 0.0;
-    const bool stick = sustained & (touched[c] != 0.0);
+        WET & !EVENTS ? lub::film_force_apart<GRID>(normal.lubrication, gap, g.film, g.m_e, g.u_n, dt, inv_dt) : 0.0;
+    // The spring acts: in sustained contact and touched (EVENTS: in overlap).
+    const bool stick = EVENTS ? gap < 0.0 : sustained & (touched[c] != 0.0);
     // Whether the lane is done here, as doubles (a pair of immovable atoms, m_e = 0, is not: the
     // general loop drops it); m_e > 0 in a bool mask stops GCC 12 with inverse masses.
-    const double on = ((stick | apart) & (g.r > 0.0) ? 1.0 : 0.0) * (g.m_e > 0.0 ? 1.0 : 0.0);
+    const double on = ((EVENTS ? resolved : stick | apart) & (g.r > 0.0) ? 1.0 : 0.0) * (g.m_e > 0.0 ? 1.0 : 0.0);
     const double in_contact = stick ? on : 0.0;
     const bool ok = on != 0.0;
     // The slip (lubricated/tangential.h): (v_i - v_j) - (R_i w_i + R_j w_j) x n, its normal part removed.
@@ -256,7 +263,9 @@ friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const 
     dx = dx - nx * normal_part, dy = dy - ny * normal_part, dz = dz - nz * normal_part;
     const double x = normal_part != 0.0 ? normal_part * normal_part / length_sq : 0.0;
     const double stretch = x < 1e-4 ? 1.0 + x * (0.5 + 0.375 * x) : x < 1.0 ? std::sqrt(1.0 / (1.0 - x)) : 1.0;
-    const double step = 1.0 * tm.dt;    // a sustained contact: the whole last step in overlap
+    // The part of the last step in overlap: all of it unless the contact is new (EVENTS).
+    const double fraction = EVENTS & (touched[c] == 0.0) ? lub::first_contact_fraction(gap, g.u_n, tm.dt) : 1.0;
+    const double step = fraction * tm.dt;
     dx = dx * stretch + sx * step, dy = dy * stretch + sy * step, dz = dz * stretch + sz * step;
     double fx = (dx * tm.stiffness_step + sx * tm.damping_step) * -m_t;
     double fy = (dy * tm.stiffness_step + sy * tm.damping_step) * -m_t;
@@ -271,7 +280,12 @@ friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const 
     dx = slides ? (fx * inv_m_t + sx * tm.damping_step) * inv_k : dx;
     dy = slides ? (fy * inv_m_t + sy * tm.damping_step) * inv_k : dy;
     dz = slides ? (fz * inv_m_t + sz * tm.damping_step) * inv_k : dz;
-    fx *= in_contact, fy *= in_contact, fz *= in_contact;    // apart: no spring
+    // Apart: no spring. EVENTS: selects (a lane it leaves may hold a NaN, from m_e = 0); the other
+    // loop keeps its products (selects there stop GCC 12 vectorising one of its forms).
+    const bool spring = in_contact != 0.0;
+    fx = EVENTS ? (spring ? fx : 0.0) : fx * in_contact;
+    fy = EVENTS ? (spring ? fy : 0.0) : fy * in_contact;
+    fz = EVENTS ? (spring ? fz : 0.0) : fz * in_contact;
     double hx = 0.0, hy = 0.0, hz = 0.0;
     if (SHEAR) {
       // 2 pi mu R_e ln(eps_al / max(eps, eps_1)) between eps_2 and eps_al (saturated in overlap).
@@ -285,11 +299,12 @@ friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const 
       hx = -damping * sx, hy = -damping * sy, hz = -damping * sz;
       fx += hx, fy += hy, fz += hz;
     }
-    const double normal_total = stick ? fn.total() : film_apart;
-    fpair[c] = on * normal_total * g.rinv;
-    film_force[c] = on * (stick ? fn.lubrication : film_apart);
+    const double normal_total = stick | EVENTS ? fn.total() : film_apart;
+    const double film_total = stick | EVENTS ? fn.lubrication : film_apart;
+    fpair[c] = EVENTS ? (ok ? normal_total * g.rinv : 0.0) : on * normal_total * g.rinv;
+    film_force[c] = EVENTS ? (ok ? film_total : 0.0) : on * film_total;
     capacity[c] = lub::film_capacity(g.m_e, g.u_n);
-    energy[c] = in_contact * fn.energy;
+    energy[c] = EVENTS ? (spring ? fn.energy : 0.0) : in_contact * fn.energy;
     force_x[c] = fx, force_y[c] = fy, force_z[c] = fz;
     // -n x F: the torque on i per unit of R_i (on j per unit of R_j).
     torque_x[c] = -(ny * fz - nz * fy), torque_y[c] = -(nz * fx - nx * fz), torque_z[c] = -(nx * fy - ny * fx);
@@ -436,15 +451,15 @@ void film_shear_only_by_inverse(const Atoms &atoms, const lub::ContactModel &mod
 
 // One entry point per mass form; the model picks the loop (dry; wet with or without a grid and a
 // shear film).
-template <bool INVERSE> __attribute__((always_inline)) static inline void
+template <bool INVERSE, bool EVENTS> __attribute__((always_inline)) static inline void
 friction_contacts_of(const Atoms &atoms, const lub::ContactModel &model, const FrictionIn &in, int n,
                      const FrictionOut &out)
 {
   const lub::Lubrication &film = model.normal.lubrication;
   const bool wet = film.active(), grid = film.grid_spacing > 0.0, shear = model.tangential.film_active();
 #define FRICTION_LOOP(W, G, S)                                                                                         \
-  friction_contact_loop<W, G, S, INVERSE>(atoms, model, in.pair_i, in.pair_j, in.touched, in.delta_x, in.delta_y,      \
-                                          in.delta_z, n, CONTACT_ARGUMENTS(out))
+  friction_contact_loop<W, G, S, INVERSE, EVENTS>(atoms, model, in.pair_i, in.pair_j, in.touched, in.delta_x,          \
+                                                  in.delta_y, in.delta_z, n, CONTACT_ARGUMENTS(out))
   if (!wet)
     FRICTION_LOOP(false, false, false);
   else if (grid && shear)
@@ -462,14 +477,28 @@ VECTOR_PAIRS_CLONES
 void friction_contacts(const Atoms &atoms, const lub::ContactModel &model, const FrictionIn &in, int n,
                        const FrictionOut &out)
 {
-  friction_contacts_of<false>(atoms, model, in, n, out);
+  friction_contacts_of<false, false>(atoms, model, in, n, out);
 }
 
 VECTOR_PAIRS_CLONES
 void friction_contacts_by_inverse(const Atoms &atoms, const lub::ContactModel &model, const FrictionIn &in, int n,
                                   const FrictionOut &out)
 {
-  friction_contacts_of<true>(atoms, model, in, n, out);
+  friction_contacts_of<true, false>(atoms, model, in, n, out);
+}
+
+VECTOR_PAIRS_CLONES
+void friction_events(const Atoms &atoms, const lub::ContactModel &model, const FrictionIn &in, int n,
+                     const FrictionOut &out)
+{
+  friction_contacts_of<false, true>(atoms, model, in, n, out);
+}
+
+VECTOR_PAIRS_CLONES
+void friction_events_by_inverse(const Atoms &atoms, const lub::ContactModel &model, const FrictionIn &in, int n,
+                                const FrictionOut &out)
+{
+  friction_contacts_of<true, true>(atoms, model, in, n, out);
 }
 
 }    // namespace vector_pairs

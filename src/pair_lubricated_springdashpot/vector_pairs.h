@@ -101,6 +101,16 @@ void friction_contacts(const Atoms &atoms, const lubricated::ContactModel &model
 void friction_contacts_by_inverse(const Atoms &atoms, const lubricated::ContactModel &model, const FrictionIn &in,
                                   int n, const FrictionOut &out);
 
+// The kept pairs friction_contacts leaves (done 0: a contact that starts or ends, or one new since
+// the last step) of a model without an entry loss (!model.normal.calibrated()): the same outputs,
+// the normal force by lubricated::contact_event_force, the spring where in overlap (from the part
+// of the last step in overlap where the contact is new), the elongation forgotten elsewhere;
+// done[c] = 1 where that resolves pair c, else 0 (for the general loop).
+void friction_events(const Atoms &atoms, const lubricated::ContactModel &model, const FrictionIn &in, int n,
+                     const FrictionOut &out);
+void friction_events_by_inverse(const Atoms &atoms, const lubricated::ContactModel &model, const FrictionIn &in, int n,
+                                const FrictionOut &out);
+
 }    // namespace vector_pairs
 }    // namespace LAMMPS_NS
 

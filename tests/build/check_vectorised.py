@@ -19,7 +19,7 @@ import sys
 SKIP = 77
 LOOPS = {"film_only_loop": 4, "contact_or_film_loop": 6, "contact_exit_loop": 6, "contact_event_loop": 6,
          "film_shear_only_loop": 4,
-         "friction_contact_loop": 10}
+         "friction_contact_loop": 20}
 
 
 def loop_lines(source):

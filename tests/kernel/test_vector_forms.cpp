@@ -318,7 +318,8 @@ TEST(InlineSincos, WithinTwoUlpsOfTheLibrary)
 }
 
 // Pairs apart now or a step ago within a step of contact (the vectorised loop of the steps where
-// a contact starts or ends): normal_force()'s entry, exit and root finding. Its Newton step is
+// a contact starts or ends), and in overlap at both (sustained, or leaving the overlap):
+// normal_force()'s entry, exit, root finding and recurrence. Its Newton step is
 // falling_root's first, from the same table (the share r / (1 + r) rounded differently), with
 // exp, sin and cos within 2 ulps: the acceleration within 1e-12 of its terms (g0, g1, the
 // landing gap and u dt, over dt^2) and the film's rounding, which its kick carries; the film and
@@ -328,7 +329,7 @@ TEST(InlineSincos, WithinTwoUlpsOfTheLibrary)
 TEST(ContactEvent, EqualsNormalForceWhereItApplies)
 {
   Draw d(17);
-  int kinds[3] = {0, 0, 0}, unresolved = 0;
+  int kinds[4] = {0, 0, 0, 0}, unresolved = 0;
   for (int trial = 0; trial < 400; ++trial) {
     const DrawnModel drawn = draw_contact_model(d, trial, 1.6);
     ASSERT_EQ(validate(drawn.coefficients), "");
@@ -338,11 +339,10 @@ TEST(ContactEvent, EqualsNormalForceWhereItApplies)
     const bool grid = drawn.grid, wet = m.lubrication.active();
     for (int state = 0; state < 150; ++state) {
       const auto [radius, mass] = draw_pair(d);
-      // Gaps and steps of either sign: approaching, just entered, just left.
-      const int kind = state % 3;
-      const double g1 = radius.value * d.log_uniform(1e-9, 0.2) * (kind == 1 ? -1.0 : 1.0);
-      const double g0 = kind == 0 ? radius.value * d.log_uniform(1e-9, 0.2)
-                                  : radius.value * d.log_uniform(1e-9, 0.2) * (kind == 1 ? 1.0 : -1.0);
+      // Gaps and steps of either sign: approaching, just entered, just left, in overlap at both.
+      const int kind = state % 4;
+      const double g1 = radius.value * d.log_uniform(1e-9, 0.2) * (kind == 1 || kind == 3 ? -1.0 : 1.0);
+      const double g0 = radius.value * d.log_uniform(1e-9, 0.2) * (kind >= 2 ? -1.0 : 1.0);
       const double u_n = (g1 - g0) / dt;
       if (!contact_possible(g1, u_n, dt)) continue;
       bool resolved = false;
@@ -354,7 +354,7 @@ TEST(ContactEvent, EqualsNormalForceWhereItApplies)
       else
         vector_form = contact_event_force<true, false>(m, g1, radius, mass, u_n, resolved);
       if (!resolved) {
-        ASSERT_NE(kind, 0);    // a contact that starts within the coming step has no root to find
+        ASSERT_TRUE(kind == 1 || kind == 2);    // only entries and exits have roots to find
         ++unresolved;
         continue;
       }

@@ -2,7 +2,10 @@
 // for every pair it takes (in sustained contact that touched at the last step, or apart over the
 // step) the same forces, torques, spring energy, elongation and touched flag as the whole contact
 // of lubricated::contact_forces<true> over a step, to rounding; the pairs it leaves to the general
-// loop are exactly the others, untouched. Random pairs: gaps from 2 % of R in overlap to past the
+// loop are exactly the others, untouched. The same for its loop of the pairs it leaves
+// (friction_events: contacts that start or end, new ones), given every pair: it takes all but
+// those of two immovable atoms and the rare entry or exit whose first Newton step misses the
+// tolerance. Random pairs: gaps from 2 % of R in overlap to past the
 // film, slips and spins that stick and slide, elongations with a normal part (rotated into the
 // tangent plane), dry and wet, fixed eps_al or grid, with and without the shear film, masses or
 // inverse masses (an immovable atom too).
@@ -20,11 +23,13 @@ namespace vp = LAMMPS_NS::vector_pairs;
 
 namespace {
 
-// |a - b| within rel of the scale (rounding: fused multiply-adds, log_inline, the exponential's
-// series; the slide's division by |F| amplifies by at most its own few ulps).
-void expect_close(double a, double b, double scale, const char *what, int pair)
+// |a - b| within 1e-11 of the scale (rounding: fused multiply-adds, log_inline, the exponential's
+// series; the slide's division by |F| amplifies by at most its own few ulps) plus `spread`, what
+// the few ulps of r by which the loop's gap r - R_i - R_j may differ change (near contact the
+// gap is a small difference of large numbers).
+void expect_close(double a, double b, double scale, const char *what, int pair, double spread = 0.0)
 {
-  ASSERT_LE(std::fabs(a - b), 1e-11 * scale + 1e-300) << what << " pair " << pair << ": " << a << " vs " << b;
+  ASSERT_LE(std::fabs(a - b), 1e-11 * scale + spread + 1e-300) << what << " pair " << pair << ": " << a << " vs " << b;
 }
 
 struct Scene {
@@ -42,15 +47,17 @@ Scene draw_scene(std::mt19937_64 &rng, int pairs, double dt)
   s.n = 2 * pairs;
   for (int k = 0; k < pairs; k++) {
     const double ri = 1e-3 * (0.9 + 0.2 * unit(rng)), rj = 1e-3 * (0.9 + 0.2 * unit(rng));
-    // Direction, gap (overlap up to 2 % of R, apart up to 15 %), normal velocity that keeps a
-    // contact sustained, ends it or starts one, and slips from creeping to sliding.
+    // Direction, gap (overlap up to 2 % of R, apart up to 15 %; every third pair within 1.5 steps
+    // of contact: entries and exits), normal velocity that keeps a contact sustained, ends it or
+    // starts one, and slips from creeping to sliding.
     double nx = around(1.0), ny = around(1.0), nz = around(1.0);
     const double norm = std::sqrt(nx * nx + ny * ny + nz * nz);
     nx /= norm, ny /= norm, nz /= norm;
-    const double gap = 1e-3 * (-0.02 + 0.17 * unit(rng) * unit(rng));
+    const double u_n = (unit(rng) < 0.5 ? -1.0 : 1.0) * std::pow(10.0, -5.0 + 4.0 * unit(rng));
+    const double far = 1e-3 * (-0.02 + 0.17 * unit(rng) * unit(rng)), near = around(1.5 * std::fabs(u_n) * dt);
+    const double gap = k % 3 == 0 ? near : far;
     const double r = ri + rj + gap;
     const double xi[3] = {around(0.01), around(0.01), around(0.01)};
-    const double u_n = (unit(rng) < 0.5 ? -1.0 : 1.0) * std::pow(10.0, -5.0 + 4.0 * unit(rng));
     for (int d = 0; d < 3; d++)
       s.x.push_back(xi[d]);
     s.x.push_back(xi[0] - r * nx), s.x.push_back(xi[1] - r * ny), s.x.push_back(xi[2] - r * nz);
@@ -77,7 +84,8 @@ Scene draw_scene(std::mt19937_64 &rng, int pairs, double dt)
   return s;
 }
 
-void check_model(const Coefficients &c, bool inverse_masses, unsigned seed, int &done_count, int &left_count)
+void check_model(const Coefficients &c, bool inverse_masses, bool events, unsigned seed, int &done_count,
+                 int &left_count)
 {
   const double dt = 1.25e-5;
   ContactModel model = make_contact_model(c, Partner::particle, dt);
@@ -93,10 +101,10 @@ void check_model(const Coefficients &c, bool inverse_masses, unsigned seed, int 
                           col(10), col(11), col(12), col(13), col(14), col(15), col(16), col(17), col(18), col(19)};
   const vp::FrictionIn in{s.pair_i.data(),  s.pair_j.data(),  s.touched.data(),
                           s.delta_x.data(), s.delta_y.data(), s.delta_z.data()};
-  if (inverse_masses)
-    vp::friction_contacts_by_inverse(atoms, model, in, pairs, o);
+  if (events)
+    (inverse_masses ? vp::friction_events_by_inverse : vp::friction_events)(atoms, model, in, pairs, o);
   else
-    vp::friction_contacts(atoms, model, in, pairs, o);
+    (inverse_masses ? vp::friction_contacts_by_inverse : vp::friction_contacts)(atoms, model, in, pairs, o);
   for (int k = 0; k < pairs; k++) {
     const int i = s.pair_i[k], j = s.pair_j[k];
     const double delx = s.x[3 * i] - s.x[3 * j], dely = s.x[3 * i + 1] - s.x[3 * j + 1],
@@ -117,8 +125,13 @@ void check_model(const Coefficients &c, bool inverse_masses, unsigned seed, int 
     const double g0 = p.gap - p.u_n * dt;
     const bool sustained = in_sustained_contact(model.normal.step, p.gap, g0);
     const bool apart = !contact_possible(p.gap, p.u_n, dt);
-    const bool takes = ((sustained && s.touched[k] != 0.0) || apart) && p.reduced_mass > 0.0;
-    ASSERT_EQ(col(19)[k] != 0.0, takes) << "pair " << k;
+    const bool crossing = (p.gap >= 0.0) != (g0 >= 0.0);    // an entry or exit: a root to find
+    const bool takes =
+        events ? col(19)[k] != 0.0 : ((sustained && s.touched[k] != 0.0) || apart) && p.reduced_mass > 0.0;
+    if (events)
+      ASSERT_TRUE(takes || p.reduced_mass == 0.0 || crossing) << "pair " << k;
+    else
+      ASSERT_EQ(col(19)[k] != 0.0, takes) << "pair " << k;
     if (!takes) {    // left to the general loop: nothing applied, the history as it was
       ++left_count;
       for (int q : {0, 1, 3, 4, 5, 6, 7, 8, 9})
@@ -131,26 +144,45 @@ void check_model(const Coefficients &c, bool inverse_masses, unsigned seed, int 
     double h[3] = {s.delta_x[k], s.delta_y[k], s.delta_z[k]};
     HistorySlot slot{h, s.touched[k] != 0.0, true};
     const ContactForces f = contact_forces<true>(model, p, slot, Evaluation::step);
-    // Scales: the largest force of the pair, the elongation's length.
-    const double force_scale = std::max(
-        {std::fabs(f.normal.total()), std::fabs(f.normal.contact), std::sqrt(dot(f.tangential, f.tangential)), 1e-300});
+    // The same with the gap moved by 1e-15 r (4.5 ulps of r) either way: the outputs' spread.
+    double hp[3] = {s.delta_x[k], s.delta_y[k], s.delta_z[k]}, hm[3] = {hp[0], hp[1], hp[2]};
+    HistorySlot slot_p{hp, s.touched[k] != 0.0, true}, slot_m{hm, s.touched[k] != 0.0, true};
+    ContactPoint moved = p;
+    moved.gap = p.gap + 1e-15 * r;
+    const ContactForces fp = contact_forces<true>(model, moved, slot_p, Evaluation::step);
+    moved.gap = p.gap - 1e-15 * r;
+    const ContactForces fm = contact_forces<true>(model, moved, slot_m, Evaluation::step);
+    auto spread = [](double a, double b) { return std::fabs(a - b); };
+    // Scales: the largest force of the pair (for the contact-event loop also the terms of the
+    // normal contact's (g2 - 2 g1 + g0) / dt^2, to whose rounding the event is exact), the
+    // elongation's length.
+    const double g2 = f.normal.contact / p.reduced_mass * dt * dt + 2.0 * p.gap - g0;
+    const double terms =
+        events ? p.reduced_mass * (std::fabs(g0) + 2.0 * std::fabs(p.gap) + std::fabs(g2)) / (dt * dt) : 0.0;
+    const double force_scale = std::max({std::fabs(f.normal.total()), std::fabs(f.normal.contact),
+                                         std::sqrt(dot(f.tangential, f.tangential)), terms, 1e-300});
     const double length_scale = std::max(
         {std::sqrt(dot(Vec3{h[0], h[1], h[2]}, Vec3{h[0], h[1], h[2]})),
          std::sqrt(s.delta_x[k] * s.delta_x[k] + s.delta_y[k] * s.delta_y[k] + s.delta_z[k] * s.delta_z[k]), 1e-300});
     // The film apart is a difference of the film integral at two gaps: its rounding is relative to
     // the integral's size (test_vector_forms.cpp), here up to 1e-10 of the force.
-    expect_close(col(0)[k] * r, f.normal.total(), 1e2 * force_scale, "normal force", k);
-    expect_close(col(1)[k], f.normal.lubrication, 1e2 * force_scale, "film", k);
-    expect_close(col(3)[k], f.normal.energy, std::fabs(f.normal.energy), "energy", k);
-    expect_close(col(4)[k], f.tangential.x, force_scale, "force x", k);
-    expect_close(col(5)[k], f.tangential.y, force_scale, "force y", k);
-    expect_close(col(6)[k], f.tangential.z, force_scale, "force z", k);
-    expect_close(col(7)[k] * s.radius[i], f.torque_i.x, force_scale * s.radius[i], "torque x", k);
-    expect_close(col(9)[k] * s.radius[j], f.torque_j.z, force_scale * s.radius[j], "torque j z", k);
-    expect_close(col(10)[k], f.shear.x, force_scale, "shear film x", k);
-    expect_close(col(15)[k], h[0], length_scale, "elongation x", k);
-    expect_close(col(16)[k], h[1], length_scale, "elongation y", k);
-    expect_close(col(17)[k], h[2], length_scale, "elongation z", k);
+    expect_close(col(0)[k] * r, f.normal.total(), 1e2 * force_scale, "normal force", k,
+                 spread(fp.normal.total(), fm.normal.total()));
+    expect_close(col(1)[k], f.normal.lubrication, 1e2 * force_scale, "film", k,
+                 spread(fp.normal.lubrication, fm.normal.lubrication));
+    expect_close(col(3)[k], f.normal.energy, std::fabs(f.normal.energy), "energy", k,
+                 spread(fp.normal.energy, fm.normal.energy));
+    expect_close(col(4)[k], f.tangential.x, force_scale, "force x", k, spread(fp.tangential.x, fm.tangential.x));
+    expect_close(col(5)[k], f.tangential.y, force_scale, "force y", k, spread(fp.tangential.y, fm.tangential.y));
+    expect_close(col(6)[k], f.tangential.z, force_scale, "force z", k, spread(fp.tangential.z, fm.tangential.z));
+    expect_close(col(7)[k] * s.radius[i], f.torque_i.x, force_scale * s.radius[i], "torque x", k,
+                 spread(fp.torque_i.x, fm.torque_i.x));
+    expect_close(col(9)[k] * s.radius[j], f.torque_j.z, force_scale * s.radius[j], "torque j z", k,
+                 spread(fp.torque_j.z, fm.torque_j.z));
+    expect_close(col(10)[k], f.shear.x, force_scale, "shear film x", k, spread(fp.shear.x, fm.shear.x));
+    expect_close(col(15)[k], h[0], length_scale, "elongation x", k, spread(hp[0], hm[0]));
+    expect_close(col(16)[k], h[1], length_scale, "elongation y", k, spread(hp[1], hm[1]));
+    expect_close(col(17)[k], h[2], length_scale, "elongation z", k, spread(hp[2], hm[2]));
     ASSERT_EQ(col(18)[k] != 0.0, slot.touched) << "pair " << k;
   }
 }
@@ -163,20 +195,21 @@ TEST(VectorFriction, EqualsTheWholeContactWhereItApplies)
   unsigned seed = 1;
   for (const char *film : {"dry", "activation", "grid", "activation shearfilm no", "grid shearfilm no"})
     for (bool inverse_masses : {false, true})
-      for (int repeat = 0; repeat < 8; repeat++) {
+      for (int repeat = 0; repeat < 16; repeat++) {
         Coefficients c;
         c.e_dry = 0.9;
         c.friction = repeat % 2 ? 0.3 : 0.05;    // sticking and sliding
+        const bool events = repeat >= 8;         // the loop of the pairs the first one leaves
         const std::string kind = film;
         if (kind != "dry") {
-          c.viscosity = repeat < 4 ? 1e-3 : 0.3;
+          c.viscosity = repeat % 8 < 4 ? 1e-3 : 0.3;
           if (kind.rfind("grid", 0) == 0)
             c.grid_spacing = 1.25e-4;
           else
             c.eps_activation = 0.1;
           if (kind.find("shearfilm no") != std::string::npos) c.shearfilm = 0;
         }
-        check_model(c, inverse_masses, seed++, done, left);
+        check_model(c, inverse_masses, events, seed++, done, left);
       }
   // Both kinds are drawn: pairs it takes (sustained or apart) and pairs it leaves.
   EXPECT_GT(done, 5000);

@@ -1,8 +1,8 @@
-"""The vectorised loop of sustained frictional contacts (vector_pairs.h friction_contacts) gives
-the general loop's results (`pair_style lubricated/springdashpot vector no`) on dense frictional
-beds, dry and wet, with the film budget binding (`limit atom`, strong films) and without it
-(`limit pair`), with and without the shear film, with a fixed activation and a grid, on 1 and 2
-ranks. So do the frictionless loops (contact_or_film, contact_exits and contact_events: contacts
+"""The vectorised loops of frictional contacts (vector_pairs.h friction_contacts, sustained, and
+friction_events, those that start or end within a step) give the general loop's results
+(`pair_style lubricated/springdashpot vector no`) on dense frictional beds, dry and wet, with the
+film budget binding (`limit atom`, strong films) and without it (`limit pair`), with and without
+the shear film, with a fixed activation and a grid, on 1 and 2 ranks. So do the frictionless loops (contact_or_film, contact_exits and contact_events: contacts
 that start or end within a step, 0.07-0.3 per sphere and step here) on the same beds without
 friction.
 
