@@ -47,10 +47,7 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
   constexpr int chunk = 256;
   double fpair[chunk], energy[chunk], film[chunk], capacity[chunk];
   double done[chunk];
-  int rest[chunk], exit_i[chunk], exit_j[chunk];
-  // The pairs of the contact-event loops (kept pairs where a contact starts or ends), compacted.
-  int *const event_i = exit_i, *const event_j = exit_j;
-  int event_jj[chunk];
+  int rest[chunk], exit_i[chunk];
   const bool budget = film_budget_now;
   auto apply = [&](int i, int j, double fij, double eij) {
     const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
@@ -141,6 +138,59 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
                                                force[1], force[2], torque_unit[0], torque_unit[1], torque_unit[2],
                                                shear[0], shear[1], shear[2],       slip_sq,        tangential_mass,
                                                next[0],  next[1],  next[2],        next_touched,   on};
+  // Pairs a chunk leaves to a loop over few of them (contacts that start or end, exits),
+  // gathered over chunks so that those loops run on whole vectors, not a few lanes and their
+  // scalar remainder: run when full, before pairs of another model join, and at the end.
+  struct Deferred {
+    const lubricated::ContactModel *model = nullptr;
+    int n = 0;
+    int i[chunk], j[chunk], jj[chunk];
+    double touched[chunk], delta[3][chunk];
+  };
+  Deferred events, exits;
+  int left[chunk];
+  // Room in a deferred list for count pairs of this model: the list runs first if it could not
+  // take them or holds another model's.
+  auto defer = [&](Deferred &list, const lubricated::ContactModel &model, int count, auto &run) {
+    if (list.model != &model || list.n + count > chunk) run();
+    list.model = &model;
+  };
+  // The frictional loops' forces, torques and elongations scattered, the films' budget records
+  // (the pairs not done have no film: no record); returns how many are not done, listed in out.
+  auto scatter_friction = [&](const lubricated::ContactModel &model, const int *list_i, const int *list_j,
+                              const int *list_jj, int count, int *out) __attribute__((always_inline))
+  {
+    int nrest = 0;
+    for (int c = 0; c < count; c++) {
+      // Branch-free: the pairs not done have zero forces and their history unchanged here.
+      const int i = list_i[c];
+      apply_tangential(i, list_j[c], fpair[c], force[0][c], force[1][c], force[2][c], torque_unit[0][c],
+                       torque_unit[1][c], torque_unit[2][c], energy[c], on[c]);
+      double *h = history->values(i) + 3 * list_jj[c];
+      h[0] = next[0][c], h[1] = next[1][c], h[2] = next[2][c];
+      history->touched(i)[list_jj[c]] = next_touched[c] != 0.0;
+      out[nrest] = c;
+      nrest += on[c] == 0.0;
+    }
+    if (budget && model.normal.lubrication.active()) record_normal_and_shear_films(list_i, list_j, count);
+    return nrest;
+  };
+  // Frictional contacts that start or end, and new ones (no entry loss): their own loop, the
+  // pairs it leaves through the general loop.
+  auto run_friction_events = [&]() {
+    if (events.n == 0) return;
+    const lubricated::ContactModel &model = *events.model;
+    const vector_pairs::FrictionIn in{events.i,        events.j,        events.touched,
+                                      events.delta[0], events.delta[1], events.delta[2]};
+    if (atoms.inverse_mass)
+      vector_pairs::friction_events_by_inverse(atoms, model, in, events.n, friction_out);
+    else
+      vector_pairs::friction_events(atoms, model, in, events.n, friction_out);
+    const int nleft = scatter_friction(model, events.i, events.j, events.jj, events.n, left);
+    for (int k = 0; k < nleft; k++)
+      evaluate(events.i[left[k]], events.j[left[k]], events.jj[left[k]]);
+    events.n = 0;
+  };
   auto friction_pairs = [&](const lubricated::ContactModel &model, const int *pair_i, const int *pair_j,
                             const int *pair_jj, int n) {
     const lubricated::TangentialModel &tm = model.tangential;
@@ -154,51 +204,59 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
       delta[0][c] = h[0], delta[1][c] = h[1], delta[2][c] = h[2];
       touched[c] = history->touched(pair_i[c])[pair_jj[c]] ? 1.0 : 0.0;
     }
-    // The loop's forces, torques and elongations scattered, the films' budget records (the pairs
-    // not done have no film: no record); returns how many are not done, listed in rest.
-    auto scatter = [&](const int *list_i, const int *list_j, const int *list_jj, int count)
-        __attribute__((always_inline))
-    {
-      int nrest = 0;
-      for (int c = 0; c < count; c++) {
-        // Branch-free: the pairs not done have zero forces and their history unchanged here.
-        const int i = list_i[c];
-        apply_tangential(i, list_j[c], fpair[c], force[0][c], force[1][c], force[2][c], torque_unit[0][c],
-                         torque_unit[1][c], torque_unit[2][c], energy[c], on[c]);
-        double *h = history->values(i) + 3 * list_jj[c];
-        h[0] = next[0][c], h[1] = next[1][c], h[2] = next[2][c];
-        history->touched(i)[list_jj[c]] = next_touched[c] != 0.0;
-        rest[nrest] = c;
-        nrest += on[c] == 0.0;
-      }
-      if (budget && model.normal.lubrication.active()) record_normal_and_shear_films(list_i, list_j, count);
-      return nrest;
-    };
     const vector_pairs::FrictionIn in{pair_i, pair_j, touched, delta[0], delta[1], delta[2]};
     if (atoms.inverse_mass)
       vector_pairs::friction_contacts_by_inverse(atoms, model, in, n, friction_out);
     else
       vector_pairs::friction_contacts(atoms, model, in, n, friction_out);
-    int nrest = scatter(pair_i, pair_j, pair_jj, n);
-    const int *left_i = pair_i, *left_j = pair_j, *left_jj = pair_jj;
-    if (nrest > 0 && !model.normal.calibrated()) {
-      // Contacts that start or end (no entry loss) and new ones: their own loop, its inputs
-      // compacted in place (rest[k] >= k), the pairs it leaves through the general loop.
-      for (int k = 0; k < nrest; k++) {
-        const int c = rest[k];
-        event_i[k] = pair_i[c], event_j[k] = pair_j[c], event_jj[k] = pair_jj[c];
-        touched[k] = touched[c], delta[0][k] = delta[0][c], delta[1][k] = delta[1][c], delta[2][k] = delta[2][c];
-      }
-      const vector_pairs::FrictionIn events{event_i, event_j, touched, delta[0], delta[1], delta[2]};
-      if (atoms.inverse_mass)
-        vector_pairs::friction_events_by_inverse(atoms, model, events, nrest, friction_out);
-      else
-        vector_pairs::friction_events(atoms, model, events, nrest, friction_out);
-      nrest = scatter(event_i, event_j, event_jj, nrest);
-      left_i = event_i, left_j = event_j, left_jj = event_jj;
+    const int nrest = scatter_friction(model, pair_i, pair_j, pair_jj, n, rest);
+    if (model.normal.calibrated()) {
+      for (int k = 0; k < nrest; k++)
+        evaluate(pair_i[rest[k]], pair_j[rest[k]], pair_jj[rest[k]]);
+      return;
     }
-    for (int k = 0; k < nrest; k++)
-      evaluate(left_i[rest[k]], left_j[rest[k]], left_jj[rest[k]]);
+    defer(events, model, nrest, run_friction_events);
+    for (int k = 0; k < nrest; k++) {
+      const int c = rest[k], e = events.n + k;
+      events.i[e] = pair_i[c], events.j[e] = pair_j[c], events.jj[e] = pair_jj[c];
+      events.touched[e] = touched[c];
+      events.delta[0][e] = delta[0][c], events.delta[1][e] = delta[1][c], events.delta[2][e] = delta[2][c];
+    }
+    events.n += nrest;
+  };
+  // Contacts that leave the overlap within the step: their own loop.
+  auto run_exits = [&]() {
+    if (exits.n == 0) return;
+    const lubricated::NormalModel &model = exits.model->normal;
+    if (atoms.inverse_mass)
+      vector_pairs::contact_exits_by_inverse(atoms, model, exits.i, exits.j, exits.n, fpair, film, capacity, energy);
+    else
+      vector_pairs::contact_exits(atoms, model, exits.i, exits.j, exits.n, fpair, film, capacity, energy);
+    for (int c = 0; c < exits.n; c++)
+      apply(exits.i[c], exits.j[c], fpair[c], energy[c]);
+    if (budget && model.lubrication.active()) record_films(exits.i, exits.j, exits.n);
+    exits.n = 0;
+  };
+  // Contacts that start or end (no entry loss): their own loop, the pairs it leaves (whose root
+  // needs more than one Newton step) through the general loop.
+  auto run_events = [&]() {
+    if (events.n == 0) return;
+    const lubricated::NormalModel &model = events.model->normal;
+    if (atoms.inverse_mass)
+      vector_pairs::contact_events_by_inverse(atoms, model, events.i, events.j, events.n, fpair, film, capacity, energy,
+                                              done);
+    else
+      vector_pairs::contact_events(atoms, model, events.i, events.j, events.n, fpair, film, capacity, energy, done);
+    int nleft = 0;
+    for (int c = 0; c < events.n; c++) {
+      apply(events.i[c], events.j[c], fpair[c], energy[c]);
+      left[nleft] = c;
+      nleft += done[c] == 0.0;
+    }
+    if (budget && model.lubrication.active()) record_films(events.i, events.j, events.n);
+    for (int k = 0; k < nleft; k++)
+      evaluate(events.i[left[k]], events.j[left[k]], 0);
+    events.n = 0;
   };
   auto kept_pairs = [&](const lubricated::ContactModel &contact_model, const int *pair_i, const int *pair_j,
                         const int * /*pair_jj*/, int n) {
@@ -213,44 +271,25 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
       // no film) here and are listed, those leaving the overlap for their own loop, the rest
       // for the general loop.
       apply(pair_i[c], pair_j[c], fpair[c], energy[c]);
-      exit_i[nexit] = pair_i[c], exit_j[nexit] = pair_j[c];
+      exit_i[nexit] = c;
       nexit += done[c] == 2.0;
       rest[nrest] = c;
       nrest += done[c] == 0.0;
     }
     if (budget && model.lubrication.active()) record_films(pair_i, pair_j, n);
-    if (nexit > 0) {
-      if (atoms.inverse_mass)
-        vector_pairs::contact_exits_by_inverse(atoms, model, exit_i, exit_j, nexit, fpair, film, capacity, energy);
-      else
-        vector_pairs::contact_exits(atoms, model, exit_i, exit_j, nexit, fpair, film, capacity, energy);
-      for (int c = 0; c < nexit; c++)
-        apply(exit_i[c], exit_j[c], fpair[c], energy[c]);
-      if (budget && model.lubrication.active()) record_films(exit_i, exit_j, nexit);
-    }
-    // Contacts that start or end (no entry loss): their own loop, the pairs it leaves (whose
-    // root needs more than one Newton step) through the general loop.
-    if (nrest > 0 && !model.calibrated()) {
+    defer(exits, contact_model, nexit, run_exits);
+    for (int k = 0; k < nexit; k++)
+      exits.i[exits.n + k] = pair_i[exit_i[k]], exits.j[exits.n + k] = pair_j[exit_i[k]];
+    exits.n += nexit;
+    if (model.calibrated()) {
       for (int k = 0; k < nrest; k++)
-        event_i[k] = pair_i[rest[k]], event_j[k] = pair_j[rest[k]];
-      if (atoms.inverse_mass)
-        vector_pairs::contact_events_by_inverse(atoms, model, event_i, event_j, nrest, fpair, film, capacity, energy,
-                                                done);
-      else
-        vector_pairs::contact_events(atoms, model, event_i, event_j, nrest, fpair, film, capacity, energy, done);
-      int nleft = 0;
-      for (int c = 0; c < nrest; c++) {
-        apply(event_i[c], event_j[c], fpair[c], energy[c]);
-        rest[nleft] = c;
-        nleft += done[c] == 0.0;
-      }
-      if (budget && model.lubrication.active()) record_films(event_i, event_j, nrest);
-      for (int k = 0; k < nleft; k++)
-        evaluate(event_i[rest[k]], event_j[rest[k]], 0);
+        evaluate(pair_i[rest[k]], pair_j[rest[k]], 0);
       return;
     }
+    defer(events, contact_model, nrest, run_events);
     for (int k = 0; k < nrest; k++)
-      evaluate(pair_i[rest[k]], pair_j[rest[k]], 0);
+      events.i[events.n + k] = pair_i[rest[k]], events.j[events.n + k] = pair_j[rest[k]];
+    events.n += nrest;
   };
   // A list in chunks, each grouped by type pair (a counting sort within the chunk, which
   // keeps the atoms' data in the cache) unless one model serves all.
@@ -294,10 +333,13 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
   if (TANGENTIAL) {
     run_list(film_i.data(), film_j.data(), nullptr, nfilm, film_shear_pairs);
     run_list(candidate_i.data(), candidate_j.data(), candidate_jj.data(), ncandidate, friction_pairs);
+    run_friction_events();
     return;
   }
   run_list(film_i.data(), film_j.data(), nullptr, nfilm, film_pairs);
   run_list(candidate_i.data(), candidate_j.data(), nullptr, ncandidate, kept_pairs);
+  run_exits();
+  run_events();
 }
 
 }    // namespace LAMMPS_NS
