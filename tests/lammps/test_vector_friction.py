@@ -4,7 +4,10 @@ friction_events, those that start or end within a step) give the general loop's 
 film budget binding (`limit atom`, strong films) and without it (`limit pair`), with and without
 the shear film, with a fixed activation and a grid, on 1 and 2 ranks. So do the frictionless loops (contact_or_film, contact_exits and contact_events: contacts
 that start or end within a step, 0.07-0.3 per sphere and step here) on the same beds without
-friction.
+friction. The contacts that start or end wait in a list over the chunks of pairs: larger beds
+(1372 spheres) fill it within a step, beds of two types with a model per type pair make it run
+when another model's pairs come (both checked to happen, and the tests to fail where the list
+does not run at the end of a step or keeps one model's pairs for another's).
 
 The bed: 256 spheres of radii 0.99-1.0 mm (from a hash of the atom ID) on a periodic fcc lattice
 compressed to 0.995 of 2 mm, so that most neighbours overlap (sustained contacts) and some pairs
@@ -47,18 +50,23 @@ FRICTIONLESS = {
     "wet activation limit pair": "viscosity 1e-3 activation 0.1",
 }
 
+# Half the spheres of type 2, a model per type pair: the pairs of each model are grouped (and the
+# loops of contacts that start or end run before another model's pairs join them).
+MIXED = "pair_coeff 1 1 0.9 ncontact 8 {0}\npair_coeff 1 2 0.8 ncontact 6 {0}\npair_coeff 2 2 0.7 ncontact 10 {0}"
+
 # A hash of the atom ID in [0, 1) (the same on any number of ranks, unlike random()).
 HASH = "(v_h{k}-floor(v_h{k}))"
 
 
-def bed(coefficients, limit, vector):
+def bed(coefficients, limit, vector, cells=4, mixed=False):
     a = 2.0 * R * COMPRESSION * 2 ** 0.5
     hashes = "\n".join(f"variable h{k} atom sin(id*{12.9898 + k}+{k})*43758.5453" for k in range(7))
     u = [HASH.format(k=k) for k in range(7)]
     return dense_scenes.HEADER + f"""lattice fcc {a!r}
-region box block 0 4 0 4 0 4
-create_box 1 box
+region box block 0 {cells} 0 {cells} 0 {cells}
+create_box {2 if mixed else 1} box
 create_atoms 1 box
+{"group odd id 1:100000:2" + chr(10) + "set group odd type 2" if mixed else ""}
 {hashes}
 variable d atom {2 * R!r}*(0.99+0.01*{u[0]})
 set group all diameter v_d
@@ -72,7 +80,7 @@ variable wy atom 100*(2*{u[5]}-1)
 variable wz atom 100*(2*{u[6]}-1)
 set group all omega v_wx v_wy v_wz
 pair_style lubricated/springdashpot {'' if vector else 'vector no'} limit {limit}
-pair_coeff * * 0.9 ncontact 8 {coefficients}
+{MIXED.format(coefficients) if mixed else "pair_coeff * * 0.9 ncontact 8 " + coefficients}
 neighbor {0.2 * R!r} bin
 neigh_modify delay 0 every 1 check yes
 fix nve all nve/sphere
@@ -95,10 +103,17 @@ print "RESULT energies $(ke:%.17g) $(c_rot:%.17g) $(pe:%.17g) $(press:%.17g) $(c
               f'$(v_sz[{k}]:%.17g)"\n' for k in range(1, 257, 15))
 
 
-# Each case's coefficients and the log line that says its vectorised loops run.
-LOOPS = {**{case: (c, "pairs in sustained frictional contact take a vectorised loop") for case, c in CASES.items()},
-         **{f"{case} frictionless": (c, "contacts that start or end within a step (without legendre), take "
-                                        "vectorised loops") for case, c in FRICTIONLESS.items()}}
+# Each case's coefficients, the log line that says its vectorised loops run and the lattice's
+# cells per edge: 4 (256 spheres), 7 (1372) where more contacts start or end in a step than the
+# loops of those contacts take at once (256: they then run more than once per step).
+FRICTION_LOG = "pairs in sustained frictional contact take a vectorised loop"
+FRICTIONLESS_LOG = "contacts that start or end within a step (without legendre), take vectorised loops"
+LOOPS = {**{case: (c, FRICTION_LOG, 4) for case, c in CASES.items()},
+         **{f"{case} frictionless": (c, FRICTIONLESS_LOG, 4) for case, c in FRICTIONLESS.items()},
+         "dry 1372 spheres": (CASES["dry"], FRICTION_LOG, 7),
+         "dry frictionless 1372 spheres": (FRICTIONLESS["dry"], FRICTIONLESS_LOG, 7),
+         "wet grid mixed": (CASES["wet grid"], FRICTION_LOG, 7),
+         "wet grid frictionless mixed": (FRICTIONLESS["wet grid"], FRICTIONLESS_LOG, 7)}
 
 
 @pytest.mark.parametrize("nprocs", [1, 2])
@@ -106,12 +121,13 @@ LOOPS = {**{case: (c, "pairs in sustained frictional contact take a vectorised l
 def test_vectorised_loops_agree_with_the_general_loop(lmp, case, nprocs):
     """The bed with the vectorised loops and with the general loop alone: the same results to
     rounding."""
-    coefficients, logged = LOOPS[case]
+    coefficients, logged, cells = LOOPS[case]
     limit = "pair" if "limit pair" in case else "atom"
-    vectorised = lmp(bed(coefficients, limit, True), nprocs=nprocs)
+    mixed = "mixed" in case
+    vectorised = lmp(bed(coefficients, limit, True, cells, mixed), nprocs=nprocs)
     assert logged in lmp.log
     assert dense_scenes.ranks(lmp.log) == {nprocs}
-    general = lmp(bed(coefficients, limit, False), nprocs=nprocs)
+    general = lmp(bed(coefficients, limit, False, cells, mixed), nprocs=nprocs)
     assert "vectorised" not in lmp.log
     ke, rot, pe, press, contacts = vectorised["energies"]
     # A dense bed: most spheres in several sustained contacts throughout; they spin (imposed
