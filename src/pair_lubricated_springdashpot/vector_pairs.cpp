@@ -343,83 +343,61 @@ void film_only_by_inverse(const Atoms &atoms, const lub::NormalModel &model, con
     film_only_loop<false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
 }
 
+// The loop LOOP<WET, GRID, INVERSE> for the model's film: dry, wet with a grid, wet without.
+#define NORMAL_LOOP(LOOP, INVERSE, ...)                                                                                \
+  do {                                                                                                                 \
+    const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;                          \
+    if (!wet)                                                                                                          \
+      LOOP<false, false, INVERSE>(__VA_ARGS__);                                                                        \
+    else if (grid)                                                                                                     \
+      LOOP<true, true, INVERSE>(__VA_ARGS__);                                                                          \
+    else                                                                                                               \
+      LOOP<true, false, INVERSE>(__VA_ARGS__);                                                                         \
+  } while (false)
+
 VECTOR_PAIRS_CLONES
 void contact_or_film(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n,
                      double *fpair, double *film, double *capacity, double *energy, double *done)
 {
-  const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
-  if (!wet)
-    contact_or_film_loop<false, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-  else if (grid)
-    contact_or_film_loop<true, true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-  else
-    contact_or_film_loop<true, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  NORMAL_LOOP(contact_or_film_loop, false, atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
 }
 
 VECTOR_PAIRS_CLONES
 void contact_or_film_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j,
                                 int n, double *fpair, double *film, double *capacity, double *energy, double *done)
 {
-  const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
-  if (!wet)
-    contact_or_film_loop<false, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-  else if (grid)
-    contact_or_film_loop<true, true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-  else
-    contact_or_film_loop<true, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  NORMAL_LOOP(contact_or_film_loop, true, atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
 }
 
 VECTOR_PAIRS_CLONES
 void contact_exits(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n,
                    double *fpair, double *film, double *capacity, double *energy)
 {
-  const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
-  if (!wet)
-    contact_exit_loop<false, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
-  else if (grid)
-    contact_exit_loop<true, true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
-  else
-    contact_exit_loop<true, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
+  NORMAL_LOOP(contact_exit_loop, false, atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
 }
 
 VECTOR_PAIRS_CLONES
 void contact_exits_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j,
                               int n, double *fpair, double *film, double *capacity, double *energy)
 {
-  const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
-  if (!wet)
-    contact_exit_loop<false, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
-  else if (grid)
-    contact_exit_loop<true, true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
-  else
-    contact_exit_loop<true, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
+  NORMAL_LOOP(contact_exit_loop, true, atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
 }
 
 VECTOR_PAIRS_CLONES
 void contact_events(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n,
                     double *fpair, double *film, double *capacity, double *energy, double *done)
 {
-  const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
-  if (!wet)
-    contact_event_loop<false, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-  else if (grid)
-    contact_event_loop<true, true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-  else
-    contact_event_loop<true, false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  NORMAL_LOOP(contact_event_loop, false, atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
 }
 
 VECTOR_PAIRS_CLONES
 void contact_events_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j,
                                int n, double *fpair, double *film, double *capacity, double *energy, double *done)
 {
-  const bool wet = model.lubrication.active(), grid = model.lubrication.grid_spacing > 0.0;
-  if (!wet)
-    contact_event_loop<false, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-  else if (grid)
-    contact_event_loop<true, true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
-  else
-    contact_event_loop<true, false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  NORMAL_LOOP(contact_event_loop, true, atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
 }
+
+#undef NORMAL_LOOP
 
 #define SHEAR_OUTPUTS(o)                                                                                               \
   o.shear_x, o.shear_y, o.shear_z, o.torque_x, o.torque_y, o.torque_z, o.slip_sq, o.tangential_mass
