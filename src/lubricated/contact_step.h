@@ -298,10 +298,15 @@ __attribute__((always_inline)) inline double exit_and_fly(const ContactStep &cs,
 
 // Gap a step ahead of a contact in overlap now (g1) and a step ago (g0) whose recurrence leaves
 // the overlap within the step (S > 0): the oscillator through g0 and g1 exits and flies on.
+// B of the oscillator g(s) = exp(-a s) (A cos ws + B sin ws), A = g1, through g0 a step before.
+inline double oscillator_sine_part(const ContactStep &cs, double g1, double g0)
+{
+  return (g1 * cs.C - g0 * cs.E) / cs.S;
+}
 template <bool INLINE = false>
 __attribute__((always_inline)) inline double exit_gap(const ContactStep &cs, double g1, double g0)
 {
-  return exit_and_fly<INLINE>(cs, g1, (g1 * cs.C - g0 * cs.E) / cs.S, cs.dt);
+  return exit_and_fly<INLINE>(cs, g1, oscillator_sine_part(cs, g1, g0), cs.dt);
 }
 
 // Gap after time t, starting in overlap or at contact (g <= 0) with rate v; once the gap
@@ -480,7 +485,6 @@ __attribute__((always_inline)) inline double event_acceleration_inline(const Con
   const double dt = cs.dt, a = cs.decay_rate, w = cs.omega;
   const double g0 = g1 - u * dt;
   const bool exited = (g1 >= 0.0) & (g0 < 0.0), entered = (g1 < 0.0) & (g0 >= 0.0);
-  const bool approaching = (g1 >= 0.0) & (g0 >= 0.0);
   // Newton's step: exit time from exp(-a s) w g0 (dt - s) + g1 sin(w s) = 0 (r = g1 / -g0), entry
   // time from g0 h(s) + g1 (dt - s) = 0 (r = -g1 / g0), both times -1 (falling in s). The share
   // r / (1 + r) of the tables as g1 / (g1 - g0) (no division by a zero g0), 0 in other lanes.
@@ -500,7 +504,7 @@ __attribute__((always_inline)) inline double event_acceleration_inline(const Con
   // falling_root's bracket after its first evaluation: [x, dt] where f > 0, else [0, x].
   const double lo = f > 0.0 ? x : 0.0, hi = f > 0.0 ? dt : x;
   const bool converged = (f == 0.0) | ((std::fabs(step) <= 1e-7 * dt) & (s >= lo) & (s <= hi));
-  resolved = approaching | ((exited | entered) & converged);
+  resolved = converged | !(exited | entered);    // only entries and exits have a root to find
 
   // Free flight towards contact: the contact starts after g1 / -v and runs for the rest of the
   // step (propagate_contact from g = 0); a contact that ended s into the last step left at the
@@ -525,14 +529,13 @@ __attribute__((always_inline)) inline double event_acceleration_inline(const Con
   const double v_in = s < 0.5 * dt ? -g0 / (dt - s) : g1 * w / (decay_s * sin_s);
   const double v1 = v_in * decay_s * (cos_s - a / w * sin_s);
   const double stop = v1 < 0.0 ? std::min(std::max(kick, 0.0), -v1) : std::max(std::min(kick, 0.0), -v1);
-  const double B = entered ? (v1 + stop + a * g1) / w : (g1 * cs.C - g0 * cs.E) / cs.S;
+  const double B = entered ? (v1 + stop + a * g1) / w : oscillator_sine_part(cs, g1, g0);
   const double in_overlap = entered ? cs.E * (g1 * cs.C + B * cs.S) : recurrence_gap(cs, g1, g0);
   const bool flies = (in_overlap >= 0.0) & (entered | (cs.S > 1e-12));
   const double g2 = flies ? exit_and_fly<true>(cs, g1, B, dt) : in_overlap;
   const double entry = (g2 - 2.0 * g1 + g0) / (dt * dt) - kick / dt;
   const bool overlapping = (g1 < 0.0) & (g0 < 0.0);
   const double overlap = in_overlap < 0.0 ? sustained_acceleration(cs, g1, u) : (g2 - 2.0 * g1 + g0) / (dt * dt);
-  resolved = resolved | overlapping;
 
   const double acceleration = exited ? exit : entered ? entry : overlapping ? overlap : approach;
   return contact_possible(g1, u, dt) ? acceleration : 0.0;

@@ -47,7 +47,7 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
   constexpr int chunk = 256;
   double fpair[chunk], energy[chunk], film[chunk], capacity[chunk];
   double done[chunk];
-  int rest[chunk], exit_i[chunk];
+  int rest[chunk], leaving[chunk];    // places in the chunk: pairs a loop left, pairs leaving the overlap
   const bool budget = film_budget_now;
   auto apply = [&](int i, int j, double fij, double eij) {
     const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
@@ -269,9 +269,9 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
     for (int c = 0; c < n; c++) {
       // Branch-free (which pairs are done follows no pattern): the others have fpair = 0 (and
       // no film) here and are listed, those leaving the overlap for their own loop, the rest
-      // for the general loop.
+      // (contacts that start or end) for theirs, or the general loop with an entry loss.
       apply(pair_i[c], pair_j[c], fpair[c], energy[c]);
-      exit_i[nexit] = c;
+      leaving[nexit] = c;
       nexit += done[c] == 2.0;
       rest[nrest] = c;
       nrest += done[c] == 0.0;
@@ -279,7 +279,7 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
     if (budget && model.lubrication.active()) record_films(pair_i, pair_j, n);
     defer(exits, contact_model, nexit, run_exits);
     for (int k = 0; k < nexit; k++)
-      exits.i[exits.n + k] = pair_i[exit_i[k]], exits.j[exits.n + k] = pair_j[exit_i[k]];
+      exits.i[exits.n + k] = pair_i[leaving[k]], exits.j[exits.n + k] = pair_j[leaving[k]];
     exits.n += nexit;
     if (model.calibrated()) {
       for (int k = 0; k < nrest; k++)

@@ -77,6 +77,22 @@ DrawnModel draw_contact_model(Draw &d, int trial, double min_steps)
   return drawn;
 }
 
+// Every state of every trial: a valid contact model (draw_contact_model), then `states` pairs
+// (draw_pair) handed to body(drawn, radius, mass, state), which draws its gap and velocity from d;
+// the draws in the order of a loop over trials and states. Stops at a fatal failure.
+template <class Body> void for_each_drawn_pair(Draw &d, double min_steps, int states, Body body)
+{
+  for (int trial = 0; trial < 400; ++trial) {
+    const DrawnModel drawn = draw_contact_model(d, trial, min_steps);
+    ASSERT_EQ(validate(drawn.coefficients), "");
+    for (int state = 0; state < states; ++state) {
+      const auto [radius, mass] = draw_pair(d);
+      body(drawn, radius, mass, state);
+      if (::testing::Test::HasFatalFailure()) return;
+    }
+  }
+}
+
 // normal_force takes the film over a step as a difference of film integrals P, sums of terms
 // of order 1: its rounding is about 1e-16 of those terms (as a force), however close the two
 // ends of the step; the forms here differ from it by that and by the inline logarithm.
@@ -188,49 +204,44 @@ TEST(SustainedContact, EqualsNormalForceWhereItApplies)
 {
   Draw d(11);
   int sustained_count = 0, other_count = 0;
-  for (int trial = 0; trial < 400; ++trial) {
-    const DrawnModel drawn = draw_contact_model(d, trial, 1.0);
-    ASSERT_EQ(validate(drawn.coefficients), "");
+  for_each_drawn_pair(d, 1.0, 100, [&](const DrawnModel &drawn, const FilmRadius &radius, double mass, int state) {
     const NormalModel &m = drawn.model;
     const double dt = drawn.dt;
     const bool grid = drawn.grid;
-    for (int state = 0; state < 100; ++state) {
-      const auto [radius, mass] = draw_pair(d);
-      const double gap = -radius.value * d.log_uniform(1e-9, 0.2);
-      // Overlap rates from creeping to leaving the overlap within the step, both signs.
-      const double u_n = -gap / dt * d.log_uniform(1e-6, 3.0) * (state % 2 ? 1.0 : -1.0);
-      bool sustained = false;
-      const NormalForce vector_form = grid ? sustained_contact_force<true>(m, gap, radius, mass, u_n, sustained)
-                                           : sustained_contact_force<false>(m, gap, radius, mass, u_n, sustained);
-      if (!sustained) {
-        ++other_count;
-        continue;
-      }
-      ++sustained_count;
-      const NormalForce expected = normal_force(m, gap, radius, mass, u_n);
-      ASSERT_DOUBLE_EQ(vector_form.contact, expected.contact);
-      ASSERT_DOUBLE_EQ(vector_form.energy, expected.energy);
-      ASSERT_NEAR(vector_form.lubrication, expected.lubrication, film_rounding(m, radius, dt))
-          << "gap " << gap << " u_n dt " << u_n * dt;
-      // The one-pair form (LIGGGHTS's contacts): lambda(eps_al) by std::log, as activation()
-      // but 1 / eps_al as R / (0.75 dx): to the rounding of lambda's terms.
-      const Lubrication &lub = m.lubrication;
-      const Lubrication::Activation al = lub.activation(radius);
-      const double l = std::log(std::max(al.eps, 1e-300)),
-                   terms = std::fabs(lub.expansion.c_inv / al.eps) + std::fabs(lub.expansion.c_log * l) +
-                           std::fabs(lub.expansion.c_elog * al.eps * l) + std::fabs(lub.expansion.c_0);
-      if (lub.grid_spacing > 0.0)
-        ASSERT_NEAR(lub.lambda_activation_for(radius), al.lambda, 1e-15 * terms);
-      else    // the type pair's own lambda(eps_al)
-        ASSERT_EQ(lub.lambda_activation_for(radius), al.lambda);
-      bool scalar_sustained = false;
-      const NormalForce scalar_form = sustained_contact_force(
-          m, gap, radius, mass, u_n, m.lubrication.lambda_activation_for(radius), scalar_sustained);
-      ASSERT_TRUE(scalar_sustained);
-      ASSERT_DOUBLE_EQ(scalar_form.contact, expected.contact);
-      ASSERT_NEAR(scalar_form.lubrication, expected.lubrication, film_rounding(m, radius, dt));
+    const double gap = -radius.value * d.log_uniform(1e-9, 0.2);
+    // Overlap rates from creeping to leaving the overlap within the step, both signs.
+    const double u_n = -gap / dt * d.log_uniform(1e-6, 3.0) * (state % 2 ? 1.0 : -1.0);
+    bool sustained = false;
+    const NormalForce vector_form = grid ? sustained_contact_force<true>(m, gap, radius, mass, u_n, sustained)
+                                         : sustained_contact_force<false>(m, gap, radius, mass, u_n, sustained);
+    if (!sustained) {
+      ++other_count;
+      return;
     }
-  }
+    ++sustained_count;
+    const NormalForce expected = normal_force(m, gap, radius, mass, u_n);
+    ASSERT_DOUBLE_EQ(vector_form.contact, expected.contact);
+    ASSERT_DOUBLE_EQ(vector_form.energy, expected.energy);
+    ASSERT_NEAR(vector_form.lubrication, expected.lubrication, film_rounding(m, radius, dt))
+        << "gap " << gap << " u_n dt " << u_n * dt;
+    // The one-pair form (LIGGGHTS's contacts): lambda(eps_al) by std::log, as activation()
+    // but 1 / eps_al as R / (0.75 dx): to the rounding of lambda's terms.
+    const Lubrication &lub = m.lubrication;
+    const Lubrication::Activation al = lub.activation(radius);
+    const double l = std::log(std::max(al.eps, 1e-300)),
+                 terms = std::fabs(lub.expansion.c_inv / al.eps) + std::fabs(lub.expansion.c_log * l) +
+                         std::fabs(lub.expansion.c_elog * al.eps * l) + std::fabs(lub.expansion.c_0);
+    if (lub.grid_spacing > 0.0)
+      ASSERT_NEAR(lub.lambda_activation_for(radius), al.lambda, 1e-15 * terms);
+    else    // the type pair's own lambda(eps_al)
+      ASSERT_EQ(lub.lambda_activation_for(radius), al.lambda);
+    bool scalar_sustained = false;
+    const NormalForce scalar_form = sustained_contact_force(
+        m, gap, radius, mass, u_n, m.lubrication.lambda_activation_for(radius), scalar_sustained);
+    ASSERT_TRUE(scalar_sustained);
+    ASSERT_DOUBLE_EQ(scalar_form.contact, expected.contact);
+    ASSERT_NEAR(scalar_form.lubrication, expected.lubrication, film_rounding(m, radius, dt));
+  });
   // Both kinds are drawn: sustained contacts and contacts that start or end within the step.
   EXPECT_GT(sustained_count, 10000);
   EXPECT_GT(other_count, 5000);
@@ -276,29 +287,24 @@ TEST(ContactExit, EqualsNormalForceWhereItApplies)
 {
   Draw d(13);
   int exits = 0;
-  for (int trial = 0; trial < 400; ++trial) {
-    const DrawnModel drawn = draw_contact_model(d, trial, 1.6);
-    ASSERT_EQ(validate(drawn.coefficients), "");
+  for_each_drawn_pair(d, 1.6, 100, [&](const DrawnModel &drawn, const FilmRadius &radius, double mass, int) {
     const NormalModel &m = drawn.model;
     const double dt = drawn.dt;
     const bool grid = drawn.grid;
-    for (int state = 0; state < 100; ++state) {
-      const auto [radius, mass] = draw_pair(d);
-      const double gap = -radius.value * d.log_uniform(1e-9, 0.2);
-      // Separating: from creeping to leaving the overlap within the step.
-      const double u_n = -gap / dt * d.log_uniform(1e-3, 3.0);
-      const double g0 = gap - u_n * dt;
-      if (!leaves_overlap(m.step, gap, g0)) continue;
-      ++exits;
-      const NormalForce vector_form = grid ? overlap_exit_force<true>(m, gap, radius, mass, u_n)
-                                           : overlap_exit_force<false>(m, gap, radius, mass, u_n);
-      const NormalForce expected = normal_force(m, gap, radius, mass, u_n);
-      const double terms = mass * (std::fabs(g0) + 2.0 * std::fabs(gap) + std::fabs(u_n) * dt) / (dt * dt);
-      ASSERT_NEAR(vector_form.contact, expected.contact, 1e-13 * terms) << "gap " << gap << " u_n dt " << u_n * dt;
-      ASSERT_DOUBLE_EQ(vector_form.energy, expected.energy);
-      ASSERT_NEAR(vector_form.lubrication, expected.lubrication, film_rounding(m, radius, dt));
-    }
-  }
+    const double gap = -radius.value * d.log_uniform(1e-9, 0.2);
+    // Separating: from creeping to leaving the overlap within the step.
+    const double u_n = -gap / dt * d.log_uniform(1e-3, 3.0);
+    const double g0 = gap - u_n * dt;
+    if (!leaves_overlap(m.step, gap, g0)) return;
+    ++exits;
+    const NormalForce vector_form = grid ? overlap_exit_force<true>(m, gap, radius, mass, u_n)
+                                         : overlap_exit_force<false>(m, gap, radius, mass, u_n);
+    const NormalForce expected = normal_force(m, gap, radius, mass, u_n);
+    const double terms = mass * (std::fabs(g0) + 2.0 * std::fabs(gap) + std::fabs(u_n) * dt) / (dt * dt);
+    ASSERT_NEAR(vector_form.contact, expected.contact, 1e-13 * terms) << "gap " << gap << " u_n dt " << u_n * dt;
+    ASSERT_DOUBLE_EQ(vector_form.energy, expected.energy);
+    ASSERT_NEAR(vector_form.lubrication, expected.lubrication, film_rounding(m, radius, dt));
+  });
   EXPECT_GT(exits, 2000);
 }
 
@@ -330,47 +336,42 @@ TEST(ContactEvent, EqualsNormalForceWhereItApplies)
 {
   Draw d(17);
   int kinds[4] = {0, 0, 0, 0}, unresolved = 0;
-  for (int trial = 0; trial < 400; ++trial) {
-    const DrawnModel drawn = draw_contact_model(d, trial, 1.6);
-    ASSERT_EQ(validate(drawn.coefficients), "");
+  for_each_drawn_pair(d, 1.6, 150, [&](const DrawnModel &drawn, const FilmRadius &radius, double mass, int state) {
     const NormalModel &m = drawn.model;
     ASSERT_FALSE(m.calibrated());
     const double dt = drawn.dt;
     const bool grid = drawn.grid, wet = m.lubrication.active();
-    for (int state = 0; state < 150; ++state) {
-      const auto [radius, mass] = draw_pair(d);
-      // Gaps and steps of either sign: approaching, just entered, just left, in overlap at both.
-      const int kind = state % 4;
-      const double g1 = radius.value * d.log_uniform(1e-9, 0.2) * (kind == 1 || kind == 3 ? -1.0 : 1.0);
-      const double g0 = radius.value * d.log_uniform(1e-9, 0.2) * (kind >= 2 ? -1.0 : 1.0);
-      const double u_n = (g1 - g0) / dt;
-      if (!contact_possible(g1, u_n, dt)) continue;
-      bool resolved = false;
-      NormalForce vector_form;
-      if (!wet)
-        vector_form = contact_event_force<false, false>(m, g1, radius, mass, u_n, resolved);
-      else if (grid)
-        vector_form = contact_event_force<true, true>(m, g1, radius, mass, u_n, resolved);
-      else
-        vector_form = contact_event_force<true, false>(m, g1, radius, mass, u_n, resolved);
-      if (!resolved) {
-        ASSERT_TRUE(kind == 1 || kind == 2);    // only entries and exits have roots to find
-        ++unresolved;
-        continue;
-      }
-      ++kinds[kind];
-      const NormalForce expected = normal_force(m, g1, radius, mass, u_n);
-      const double landing = expected.contact / mass * dt * dt + 2.0 * g1 - g0;
-      const double terms =
-          mass * (std::fabs(g0) + 2.0 * std::fabs(g1) + std::fabs(landing) + std::fabs(u_n) * dt) / (dt * dt);
-      // The film's rounding enters the contact through its kick (-kick / dt and the stop).
-      const double film = wet ? film_rounding(m, radius, dt) : 0.0;
-      ASSERT_NEAR(vector_form.contact, expected.contact, 1e-12 * terms + 2.0 * film)
-          << "kind " << kind << " g1 " << g1 << " g0 " << g0 << " dt " << dt;
-      ASSERT_DOUBLE_EQ(vector_form.energy, expected.energy);
-      ASSERT_NEAR(vector_form.lubrication, expected.lubrication, film);
+    // Gaps and steps of either sign: approaching, just entered, just left, in overlap at both.
+    const int kind = state % 4;
+    const double g1 = radius.value * d.log_uniform(1e-9, 0.2) * (kind == 1 || kind == 3 ? -1.0 : 1.0);
+    const double g0 = radius.value * d.log_uniform(1e-9, 0.2) * (kind >= 2 ? -1.0 : 1.0);
+    const double u_n = (g1 - g0) / dt;
+    if (!contact_possible(g1, u_n, dt)) return;
+    bool resolved = false;
+    NormalForce vector_form;
+    if (!wet)
+      vector_form = contact_event_force<false, false>(m, g1, radius, mass, u_n, resolved);
+    else if (grid)
+      vector_form = contact_event_force<true, true>(m, g1, radius, mass, u_n, resolved);
+    else
+      vector_form = contact_event_force<true, false>(m, g1, radius, mass, u_n, resolved);
+    if (!resolved) {
+      ASSERT_TRUE(kind == 1 || kind == 2);    // only entries and exits have roots to find
+      ++unresolved;
+      return;
     }
-  }
+    ++kinds[kind];
+    const NormalForce expected = normal_force(m, g1, radius, mass, u_n);
+    const double landing = expected.contact / mass * dt * dt + 2.0 * g1 - g0;
+    const double terms =
+        mass * (std::fabs(g0) + 2.0 * std::fabs(g1) + std::fabs(landing) + std::fabs(u_n) * dt) / (dt * dt);
+    // The film's rounding enters the contact through its kick (-kick / dt and the stop).
+    const double film = wet ? film_rounding(m, radius, dt) : 0.0;
+    ASSERT_NEAR(vector_form.contact, expected.contact, 1e-12 * terms + 2.0 * film)
+        << "kind " << kind << " g1 " << g1 << " g0 " << g0 << " dt " << dt;
+    ASSERT_DOUBLE_EQ(vector_form.energy, expected.energy);
+    ASSERT_NEAR(vector_form.lubrication, expected.lubrication, film);
+  });
   for (const int count : kinds)
     EXPECT_GT(count, 5000);
   EXPECT_LT(unresolved, (kinds[1] + kinds[2]) / 8) << kinds[1] << " " << kinds[2];
