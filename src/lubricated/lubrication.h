@@ -185,8 +185,10 @@ struct Lubrication {
   // (film_force_apart); GRID: whether the film has a grid spacing.
   //   P(a) - P(b) = L(f_b) - L(f_a) + lambda(eps_al) (f_a - f_b) + (lambda(eps_1) - lambda(eps_al)) (s_b - s_a)
   // with f = eps clamped to [eps_1, eps_al] and s = eps clamped to [eps_2, eps_1].
-  template <bool GRID> __attribute__((always_inline)) double film_integral_change_inline(double after, double before,
-                                                                                         const FilmRadius &radius) const
+  // shear_log: ln(eps_al / f_a), what the shear film's coefficient needs at eps = after inside
+  // the film (ln(eps_al / max(eps, eps_1)) there; tangential.h), from the same logarithms.
+  template <bool GRID> __attribute__((always_inline)) double
+  film_integral_change_inline(double after, double before, const FilmRadius &radius, double &shear_log) const
   {
     const double reach = grid_activation * grid_spacing;
     const double eps_al = GRID ? std::max(reach * radius.inverse, eps_saturation) : eps_activation;
@@ -198,14 +200,22 @@ struct Lubrication {
       log_inline(f_a, f_b, eps_al, l_a, l_b, l_al);
       const double inverse_al = std::min(radius.value * (1.0 / reach), 1.0 / eps_saturation);
       lambda_al = expansion.lambda_of_inverse(eps_al, inverse_al, l_al);
+      shear_log = l_al - l_a;
     } else {
       log_inline(f_a, f_b, l_a, l_b);
       lambda_al = lambda_activation;
+      shear_log = log_inline(eps_activation) - l_a;    // the same for every pair: out of a loop
     }
     const double s_a = std::min(std::max(after, eps_release), eps_saturation);
     const double s_b = std::min(std::max(before, eps_release), eps_saturation);
     return expansion.integral(f_b, l_b) - expansion.integral(f_a, l_a) + lambda_al * (f_a - f_b) +
            (lambda_saturated - lambda_al) * (s_b - s_a);
+  }
+  template <bool GRID> __attribute__((always_inline)) double film_integral_change_inline(double after, double before,
+                                                                                         const FilmRadius &radius) const
+  {
+    double unused;
+    return film_integral_change_inline<GRID>(after, before, radius, unused);
   }
 
   // Momentum the film transfers to the pair (along n) while the gap goes from gap_before to

@@ -209,16 +209,25 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
 // the step, gap >= 0 and gap - u_n dt >= 0, where no contact can act: the film's path integral
 // over the step (doc/model.rst, "Lubrication film", lubrication.h) as a force [force], without
 // branches or calls, for loops over such pairs that the compiler vectorises. Requires an
-// active film; GRID: whether it has a grid spacing (Lubrication::activation_inline).
+// active film; GRID: whether it has a grid spacing (Lubrication::activation_inline). shear_log:
+// the shear film's logarithm at the gap (Lubrication::film_integral_change_inline).
+template <bool GRID>
+__attribute__((always_inline)) inline double film_force_apart(const Lubrication &lub, double gap,
+                                                              const FilmRadius &radius, double reduced_mass, double u_n,
+                                                              double dt, double inv_dt, double &shear_log)
+{
+  const double after = gap * radius.inverse, before = (gap - u_n * dt) * radius.inverse;
+  const double impulse = lub.six_pi_mu * radius.value * radius.value *
+                         lub.film_integral_change_inline<GRID>(after, before, radius, shear_log);
+  return film_force_of_impulse(impulse, reduced_mass * std::fabs(u_n), inv_dt);
+}
 template <bool GRID> __attribute__((always_inline)) inline double film_force_apart(const Lubrication &lub, double gap,
                                                                                    const FilmRadius &radius,
                                                                                    double reduced_mass, double u_n,
                                                                                    double dt, double inv_dt)
 {
-  const double after = gap * radius.inverse, before = (gap - u_n * dt) * radius.inverse;
-  const double impulse =
-      lub.six_pi_mu * radius.value * radius.value * lub.film_integral_change_inline<GRID>(after, before, radius);
-  return film_force_of_impulse(impulse, reduced_mass * std::fabs(u_n), inv_dt);
+  double unused;
+  return film_force_apart<GRID>(lub, gap, radius, reduced_mass, u_n, dt, inv_dt, unused);
 }
 
 // normal_force() (exact integration, a step) for a pair in sustained contact: in overlap now
@@ -288,19 +297,30 @@ overlap_exit_force(const NormalModel &m, double gap, const FilmRadius &radius, d
 // Without branches or calls, for loops the compiler vectorises over such pairs; resolved as
 // event_acceleration_inline (where false, take normal_force()). reduced_mass > 0; WET: whether
 // the film is active, GRID: whether it has a grid spacing.
+// shear_log: as film_force_apart's (WET only).
 template <bool WET, bool GRID>
 __attribute__((always_inline)) inline NormalForce contact_event_force(const NormalModel &m, double gap,
                                                                       const FilmRadius &radius, double reduced_mass,
-                                                                      double u_n, bool &resolved)
+                                                                      double u_n, bool &resolved, double &shear_log)
 {
   const ContactStep &cs = m.step;
   NormalForce f;
   const double k = reduced_mass * m.contact.stiffness_per_mass;
   f.energy = gap < 0.0 ? 0.5 * k * gap * gap : 0.0;
-  f.lubrication = WET ? film_force_apart<GRID>(m.lubrication, gap, radius, reduced_mass, u_n, cs.dt, cs.inv_dt) : 0.0;
+  shear_log = 0.0;
+  f.lubrication =
+      WET ? film_force_apart<GRID>(m.lubrication, gap, radius, reduced_mass, u_n, cs.dt, cs.inv_dt, shear_log) : 0.0;
   const double kick = gap - u_n * cs.dt >= 0.0 ? f.lubrication * cs.dt / reduced_mass : 0.0;
   f.contact = reduced_mass * event_acceleration_inline(cs, gap, u_n, kick, resolved);
   return f;
+}
+template <bool WET, bool GRID>
+__attribute__((always_inline)) inline NormalForce contact_event_force(const NormalModel &m, double gap,
+                                                                      const FilmRadius &radius, double reduced_mass,
+                                                                      double u_n, bool &resolved)
+{
+  double unused;
+  return contact_event_force<WET, GRID>(m, gap, radius, reduced_mass, u_n, resolved, unused);
 }
 
 inline NormalForce normal_force(const NormalModel &m, double gap, double radius, double reduced_mass, double u_n,

@@ -187,11 +187,12 @@ inline Vec3 shear_film_force(const TangentialModel &m, const Vec3 &s, double eps
 // shear_film_force() for a pair apart by more than eps_release R, without branches or calls, for
 // loops the compiler vectorises: the damping d of the force -d s [mass/time], the same to a few
 // units in the last place (log_inline, one_minus_exp_neg_inline); 0 where the tangential mass is
-// 0 (two immovable atoms).
-__attribute__((always_inline)) inline double shear_film_damping_apart(const TangentialModel &m, double eps,
-                                                                      double eps_al, double eps_saturation,
-                                                                      double eps_release, double reduced_radius,
-                                                                      double tangential_mass)
+// 0 (two immovable atoms). log_ratio: ln(eps_al / max(eps, eps_saturation)) where the caller has
+// it (the normal film's logarithms give it, Lubrication::film_integral_change_inline).
+__attribute__((always_inline)) inline double shear_film_damping_of_log(const TangentialModel &m, double eps,
+                                                                       double eps_al, double eps_release,
+                                                                       double log_ratio, double reduced_radius,
+                                                                       double tangential_mass)
 {
   // Every operation done for every pair, the result selected (no branch for the compiler to
   // keep): outside the film the coefficient is 0; a zero mass is replaced by 1 and its damping
@@ -199,10 +200,17 @@ __attribute__((always_inline)) inline double shear_film_damping_apart(const Tang
   const double in_film = (eps < eps_al) & (eps > eps_release) ? 1.0 : 0.0;
   const double movable = tangential_mass > 0.0 ? 1.0 : 0.0;
   const double mass = tangential_mass + (1.0 - movable);
-  const double coefficient =
-      in_film * m.two_pi_mu * reduced_radius * log_inline(eps_al / std::max(eps, eps_saturation));
+  const double coefficient = in_film * m.two_pi_mu * reduced_radius * log_ratio;
   const double rate = coefficient * m.dt / mass;
   return movable * one_minus_exp_neg_inline(rate) * mass / m.dt;
+}
+__attribute__((always_inline)) inline double shear_film_damping_apart(const TangentialModel &m, double eps,
+                                                                      double eps_al, double eps_saturation,
+                                                                      double eps_release, double reduced_radius,
+                                                                      double tangential_mass)
+{
+  return shear_film_damping_of_log(m, eps, eps_al, eps_release, log_inline(eps_al / std::max(eps, eps_saturation)),
+                                   reduced_radius, tangential_mass);
 }
 
 }    // namespace lubricated

@@ -49,17 +49,21 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
   double done[chunk];
   int rest[chunk], leaving[chunk];    // places in the chunk: pairs a loop left, pairs leaving the overlap
   const bool budget = film_budget_now;
-  auto apply = [&](int i, int j, double fij, double eij) {
-    const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
-    f[i][0] += delx * fij;
-    f[i][1] += dely * fij;
-    f[i][2] += delz * fij;
-    if (newton_pair || j < nlocal) {
-      f[j][0] -= delx * fij;
-      f[j][1] -= dely * fij;
-      f[j][2] -= delz * fij;
+  // The per-atom arrays as the blocks they are (3 per atom): no row pointer to load per access.
+  const double *x_all = x[0];
+  double *f_all = f[0], *torque_all = TANGENTIAL ? atom->torque[0] : nullptr;
+  // The whole force on i of chunk place c (the loops' force outputs), the opposite on j.
+  double force[3][chunk];
+  const vector_pairs::ForceOut force_out{force[0], force[1], force[2]};
+  auto apply = [&](int i, int j, int c, double eij) {
+    const double fx = force[0][c], fy = force[1][c], fz = force[2][c];
+    double *fi = f_all + 3 * i, *fj = f_all + 3 * j;
+    fi[0] += fx, fi[1] += fy, fi[2] += fz;
+    if (newton_pair || j < nlocal) fj[0] -= fx, fj[1] -= fy, fj[2] -= fz;
+    if (evflag) {
+      const double *xi = x_all + 3 * i, *xj = x_all + 3 * j;
+      ev_tally_xyz(i, j, nlocal, newton_pair, eij, 0.0, fx, fy, fz, xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
     }
-    if (evflag) ev_tally(i, j, nlocal, newton_pair, eij, 0.0, fij, delx, dely, delz);
   };
   // The loops' films enter the budget (their kick is a step: the loops run in steps only): the
   // shares in a loop of their own (vectorised), the rest with the forces' scatter.
@@ -75,33 +79,37 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
                         const int * /*pair_jj*/, int n) {
     const lubricated::NormalModel &model = contact_model.normal;
     if (atoms.inverse_mass)
-      vector_pairs::film_only_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+      vector_pairs::film_only_by_inverse(atoms, model, pair_i, pair_j, n, force_out, film, capacity);
     else
-      vector_pairs::film_only(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+      vector_pairs::film_only(atoms, model, pair_i, pair_j, n, force_out, film, capacity);
     for (int c = 0; c < n; c++)
-      apply(pair_i[c], pair_j[c], fpair[c], 0.0);
+      apply(pair_i[c], pair_j[c], c, 0.0);
     if (budget) record_films(pair_i, pair_j, n);
   };
   // The same with the shear film (friction or rolling: a shear film may act apart).
   double shear[6][chunk], slip_sq[chunk], tangential_mass[chunk];
-  const vector_pairs::ShearOut shear_out{shear[0], shear[1], shear[2], shear[3],
-                                         shear[4], shear[5], slip_sq,  tangential_mass};
-  double **torque = atom->torque;
+  const vector_pairs::ShearOut shear_out{force[0], force[1], force[2], shear[0], shear[1],       shear[2],
+                                         shear[3], shear[4], shear[5], slip_sq,  tangential_mass};
   const double *radius = atom->radius;
-  // A pair's force: fij (x_i - x_j) plus the tangential force (tx, ty, tz) on i, the opposite on
-  // j; the torque (ux, uy, uz) per unit radius on both; tallied (with energy eij) unless tallied = 0.
-  auto apply_tangential = [&](int i, int j, double fij, double tx, double ty, double tz, double ux, double uy,
-                              double uz, double eij, double tallied) __attribute__((always_inline))
+  // A pair's force (fx, fy, fz) on i, the opposite on j; the torque (ux, uy, uz) per unit
+  // radius on both; tallied (with energy eij) unless tallied = 0.
+  auto apply_tangential = [&](int i, int j, double fx, double fy, double fz, double ux, double uy, double uz,
+                              double eij, double tallied) __attribute__((always_inline))
   {
-    const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
-    const double fx = delx * fij + tx, fy = dely * fij + ty, fz = delz * fij + tz;
-    f[i][0] += fx, f[i][1] += fy, f[i][2] += fz;
-    torque[i][0] += radius[i] * ux, torque[i][1] += radius[i] * uy, torque[i][2] += radius[i] * uz;
+    double *fi = f_all + 3 * i, *ti = torque_all + 3 * i;
+    const double radi = radius[i];
+    fi[0] += fx, fi[1] += fy, fi[2] += fz;
+    ti[0] += radi * ux, ti[1] += radi * uy, ti[2] += radi * uz;
     if (newton_pair || j < nlocal) {
-      f[j][0] -= fx, f[j][1] -= fy, f[j][2] -= fz;
-      torque[j][0] += radius[j] * ux, torque[j][1] += radius[j] * uy, torque[j][2] += radius[j] * uz;
+      double *fj = f_all + 3 * j, *tj = torque_all + 3 * j;
+      const double radj = radius[j];
+      fj[0] -= fx, fj[1] -= fy, fj[2] -= fz;
+      tj[0] += radj * ux, tj[1] += radj * uy, tj[2] += radj * uz;
     }
-    if (evflag && tallied != 0.0) ev_tally_xyz(i, j, nlocal, newton_pair, eij, 0.0, fx, fy, fz, delx, dely, delz);
+    if (evflag && tallied != 0.0) {
+      const double *xi = x_all + 3 * i, *xj = x_all + 3 * j;
+      ev_tally_xyz(i, j, nlocal, newton_pair, eij, 0.0, fx, fy, fz, xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
+    }
   };
   // The budget's records of the normal films, and with shear_records the shear films (shear,
   // slip_sq, tangential_mass), of a chunk; the contact's share the larger of the two.
@@ -126,14 +134,13 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
     else
       vector_pairs::film_shear_only(atoms, model, pair_i, pair_j, n, fpair, film, capacity, shear_out);
     for (int c = 0; c < n; c++)
-      apply_tangential(pair_i[c], pair_j[c], fpair[c], shear[0][c], shear[1][c], shear[2][c], shear[3][c], shear[4][c],
+      apply_tangential(pair_i[c], pair_j[c], force[0][c], force[1][c], force[2][c], shear[3][c], shear[4][c],
                        shear[5][c], 0.0, evflag);
     if (budget) record_normal_and_shear_films(pair_i, pair_j, n);
   };
   // Sustained frictional contacts (TANGENTIAL): the elongations gathered, the whole contact
   // vectorised, forces, torques and elongations scattered; the rest through the general loop.
-  double touched[chunk], delta[3][chunk], next[3][chunk], next_touched[chunk], force[3][chunk], torque_unit[3][chunk],
-      on[chunk];
+  double touched[chunk], delta[3][chunk], next[3][chunk], next_touched[chunk], torque_unit[3][chunk], on[chunk];
   const vector_pairs::FrictionOut friction_out{fpair,    film,     capacity,       energy,         force[0],
                                                force[1], force[2], torque_unit[0], torque_unit[1], torque_unit[2],
                                                shear[0], shear[1], shear[2],       slip_sq,        tangential_mass,
@@ -164,8 +171,8 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
     for (int c = 0; c < count; c++) {
       // Branch-free: the pairs not done have zero forces and their history unchanged here.
       const int i = list_i[c];
-      apply_tangential(i, list_j[c], fpair[c], force[0][c], force[1][c], force[2][c], torque_unit[0][c],
-                       torque_unit[1][c], torque_unit[2][c], energy[c], on[c]);
+      apply_tangential(i, list_j[c], force[0][c], force[1][c], force[2][c], torque_unit[0][c], torque_unit[1][c],
+                       torque_unit[2][c], energy[c], on[c]);
       double *h = history->values(i) + 3 * list_jj[c];
       h[0] = next[0][c], h[1] = next[1][c], h[2] = next[2][c];
       history->touched(i)[list_jj[c]] = next_touched[c] != 0.0;
@@ -229,11 +236,12 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
     if (exits.n == 0) return;
     const lubricated::NormalModel &model = exits.model->normal;
     if (atoms.inverse_mass)
-      vector_pairs::contact_exits_by_inverse(atoms, model, exits.i, exits.j, exits.n, fpair, film, capacity, energy);
+      vector_pairs::contact_exits_by_inverse(atoms, model, exits.i, exits.j, exits.n, force_out, film, capacity,
+                                             energy);
     else
-      vector_pairs::contact_exits(atoms, model, exits.i, exits.j, exits.n, fpair, film, capacity, energy);
+      vector_pairs::contact_exits(atoms, model, exits.i, exits.j, exits.n, force_out, film, capacity, energy);
     for (int c = 0; c < exits.n; c++)
-      apply(exits.i[c], exits.j[c], fpair[c], energy[c]);
+      apply(exits.i[c], exits.j[c], c, energy[c]);
     if (budget && model.lubrication.active()) record_films(exits.i, exits.j, exits.n);
     exits.n = 0;
   };
@@ -243,13 +251,13 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
     if (events.n == 0) return;
     const lubricated::NormalModel &model = events.model->normal;
     if (atoms.inverse_mass)
-      vector_pairs::contact_events_by_inverse(atoms, model, events.i, events.j, events.n, fpair, film, capacity, energy,
-                                              done);
+      vector_pairs::contact_events_by_inverse(atoms, model, events.i, events.j, events.n, force_out, film, capacity,
+                                              energy, done);
     else
-      vector_pairs::contact_events(atoms, model, events.i, events.j, events.n, fpair, film, capacity, energy, done);
+      vector_pairs::contact_events(atoms, model, events.i, events.j, events.n, force_out, film, capacity, energy, done);
     int nleft = 0;
     for (int c = 0; c < events.n; c++) {
-      apply(events.i[c], events.j[c], fpair[c], energy[c]);
+      apply(events.i[c], events.j[c], c, energy[c]);
       left[nleft] = c;
       nleft += done[c] == 0.0;
     }
@@ -262,15 +270,16 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
                         const int * /*pair_jj*/, int n) {
     const lubricated::NormalModel &model = contact_model.normal;
     if (atoms.inverse_mass)
-      vector_pairs::contact_or_film_by_inverse(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+      vector_pairs::contact_or_film_by_inverse(atoms, model, pair_i, pair_j, n, force_out, film, capacity, energy,
+                                               done);
     else
-      vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+      vector_pairs::contact_or_film(atoms, model, pair_i, pair_j, n, force_out, film, capacity, energy, done);
     int nrest = 0, nexit = 0;
     for (int c = 0; c < n; c++) {
-      // Branch-free (which pairs are done follows no pattern): the others have fpair = 0 (and
+      // Branch-free (which pairs are done follows no pattern): the others have no force (and
       // no film) here and are listed, those leaving the overlap for their own loop, the rest
       // (contacts that start or end) for theirs, or the general loop with an entry loss.
-      apply(pair_i[c], pair_j[c], fpair[c], energy[c]);
+      apply(pair_i[c], pair_j[c], c, energy[c]);
       leaving[nexit] = c;
       nexit += done[c] == 2.0;
       rest[nrest] = c;

@@ -51,15 +51,16 @@ template <bool INVERSE> __attribute__((always_inline)) static inline Geometry ge
 
 template <bool GRID, bool INVERSE> __attribute__((always_inline)) static inline void
 film_only_loop(const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
-               const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
-               double *__restrict capacity)
+               const int *__restrict pair_j, int n, double *__restrict force_x, double *__restrict force_y,
+               double *__restrict force_z, double *__restrict film_force, double *__restrict capacity)
 {
   const double dt = model.step.dt, inv_dt = model.step.inv_dt;
   for (int c = 0; c < n; c++) {
     const Geometry g = geometry<INVERSE>(atoms, pair_i[c], pair_j[c]);
     const double film =
         lub::film_force_apart<GRID>(model.lubrication, g.r - g.radsum, g.film, g.m_e, g.u_n, dt, inv_dt);
-    fpair[c] = g.rinv * film;
+    const double fpair = g.rinv * film;
+    force_x[c] = g.delx * fpair, force_y[c] = g.dely * fpair, force_z[c] = g.delz * fpair;
     film_force[c] = film;
     capacity[c] = lub::film_capacity(g.m_e, g.u_n);
   }
@@ -67,8 +68,9 @@ film_only_loop(const Atoms &atoms, const lub::NormalModel &model, const int *__r
 
 template <bool WET, bool GRID, bool INVERSE> __attribute__((always_inline)) static inline void
 contact_or_film_loop(const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
-                     const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
-                     double *__restrict capacity, double *__restrict energy, double *__restrict done)
+                     const int *__restrict pair_j, int n, double *__restrict force_x, double *__restrict force_y,
+                     double *__restrict force_z, double *__restrict film_force, double *__restrict capacity,
+                     double *__restrict energy, double *__restrict done)
 {
   const double dt = model.step.dt, inv_dt = model.step.inv_dt;
   for (int c = 0; c < n; c++) {
@@ -81,7 +83,8 @@ contact_or_film_loop(const Atoms &atoms, const lub::NormalModel &model, const in
     const double film =
         WET ? lub::film_force_apart<GRID>(model.lubrication, gap, g.film, g.m_e, g.u_n, dt, inv_dt) : 0.0;
     const bool known = (sustained | apart) & (g.r > 0.0);
-    fpair[c] = known ? (sustained ? contact.total() : film) * g.rinv : 0.0;
+    const double fpair = known ? (sustained ? contact.total() : film) * g.rinv : 0.0;
+    force_x[c] = g.delx * fpair, force_y[c] = g.dely * fpair, force_z[c] = g.delz * fpair;
     // The shares themselves are divided out by the caller: with that division in it, GCC 12
     // no longer if-converts (and vectorises) this loop.
     film_force[c] = WET & known ? (sustained ? contact.lubrication : film) : 0.0;
@@ -98,13 +101,15 @@ contact_or_film_loop(const Atoms &atoms, const lub::NormalModel &model, const in
 // force, the saturated film and the spring's energy; as contact_or_film's outputs.
 template <bool WET, bool GRID, bool INVERSE> __attribute__((always_inline)) static inline void
 contact_exit_loop(const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
-                  const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
-                  double *__restrict capacity, double *__restrict energy)
+                  const int *__restrict pair_j, int n, double *__restrict force_x, double *__restrict force_y,
+                  double *__restrict force_z, double *__restrict film_force, double *__restrict capacity,
+                  double *__restrict energy)
 {
   for (int c = 0; c < n; c++) {
     const Geometry g = geometry<INVERSE>(atoms, pair_i[c], pair_j[c]);
     const lub::NormalForce f = lub::overlap_exit_force<GRID>(model, g.r - g.radsum, g.film, g.m_e, g.u_n);
-    fpair[c] = f.total() * g.rinv;
+    const double fpair = f.total() * g.rinv;
+    force_x[c] = g.delx * fpair, force_y[c] = g.dely * fpair, force_z[c] = g.delz * fpair;
     film_force[c] = WET ? f.lubrication : 0.0;
     capacity[c] = lub::film_capacity(g.m_e, g.u_n);
     energy[c] = f.energy;
@@ -116,8 +121,9 @@ contact_exit_loop(const Atoms &atoms, const lub::NormalModel &model, const int *
 // pair c (or neither atom moves: no force), else 0 for the general loop (outputs 0).
 template <bool WET, bool GRID, bool INVERSE> __attribute__((always_inline)) static inline void
 contact_event_loop(const Atoms &atoms, const lub::NormalModel &model, const int *__restrict pair_i,
-                   const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
-                   double *__restrict capacity, double *__restrict energy, double *__restrict done)
+                   const int *__restrict pair_j, int n, double *__restrict force_x, double *__restrict force_y,
+                   double *__restrict force_z, double *__restrict film_force, double *__restrict capacity,
+                   double *__restrict energy, double *__restrict done)
 {
   // Local copies (as film_shear_only_loop): no store can alias them, so their loads (the guess
   // tables' pointers among them) leave the loop.
@@ -132,7 +138,8 @@ contact_event_loop(const Atoms &atoms, const lub::NormalModel &model, const int 
     // with inverse masses); a pair neither of whose atoms moves is done without a force.
     const double moving = g.m_e > 0.0 ? 1.0 : 0.0;
     const bool known = resolved & (moving != 0.0) & (g.r > 0.0);
-    fpair[c] = known ? f.total() * g.rinv : 0.0;
+    const double fpair = known ? f.total() * g.rinv : 0.0;
+    force_x[c] = g.delx * fpair, force_y[c] = g.dely * fpair, force_z[c] = g.delz * fpair;
     film_force[c] = WET & known ? f.lubrication : 0.0;
     capacity[c] = lub::film_capacity(g.m_e, g.u_n);
     energy[c] = known ? f.energy : 0.0;
@@ -143,7 +150,8 @@ contact_event_loop(const Atoms &atoms, const lub::NormalModel &model, const int 
 template <bool GRID, bool INVERSE> __attribute__((always_inline)) static inline void
 film_shear_only_loop(const Atoms &atoms, const lub::ContactModel &model, const int *__restrict pair_i,
                      const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
-                     double *__restrict capacity, double *__restrict shear_x, double *__restrict shear_y,
+                     double *__restrict capacity, double *__restrict force_x, double *__restrict force_y,
+                     double *__restrict force_z, double *__restrict shear_x, double *__restrict shear_y,
                      double *__restrict shear_z, double *__restrict torque_x, double *__restrict torque_y,
                      double *__restrict torque_z, double *__restrict slip_sq, double *__restrict tangential_mass)
 {
@@ -160,8 +168,10 @@ film_shear_only_loop(const Atoms &atoms, const lub::ContactModel &model, const i
     const int i = pair_i[c], j = pair_j[c];
     const Geometry g = geometry<INVERSE>(local, i, j);
     const double gap = g.r - g.radsum;
-    const double film = lub::film_force_apart<GRID>(film_law, gap, g.film, g.m_e, g.u_n, dt, inv_dt);
-    fpair[c] = g.rinv * film;
+    double shear_log;    // the shear film's logarithm, from the normal film's
+    const double film = lub::film_force_apart<GRID>(film_law, gap, g.film, g.m_e, g.u_n, dt, inv_dt, shear_log);
+    const double normal = g.rinv * film;
+    fpair[c] = normal;
     film_force[c] = film;
     capacity[c] = lub::film_capacity(g.m_e, g.u_n);
     // The slip of the surfaces (lubricated/tangential.h) and the shear film on it, in plain
@@ -180,11 +190,11 @@ film_shear_only_loop(const Atoms &atoms, const lub::ContactModel &model, const i
     const double sx = ax - nx * along, sy = ay - ny * along, sz = az - nz * along;
     const double m_t = lub::tangential_mass_ratio * g.m_e;
     const double eps_al = film_law.activation_inline<GRID>(g.film).eps;
-    const double damping =
-        lub::shear_film_damping_apart(shear_law, gap * g.film.inverse, eps_al, film_law.eps_saturation,
-                                      film_law.eps_release, radi * radj / g.radsum, m_t);
+    const double damping = lub::shear_film_damping_of_log(shear_law, gap * g.film.inverse, eps_al, film_law.eps_release,
+                                                          shear_log, radi * radj / g.radsum, m_t);
     const double fx = -damping * sx, fy = -damping * sy, fz = -damping * sz;
     shear_x[c] = fx, shear_y[c] = fy, shear_z[c] = fz;
+    force_x[c] = g.delx * normal + fx, force_y[c] = g.dely * normal + fy, force_z[c] = g.delz * normal + fz;
     // -n x F: the torque on i per unit of R_i (on j per unit of R_j).
     torque_x[c] = -(ny * fz - nz * fy), torque_y[c] = -(nz * fx - nx * fz), torque_z[c] = -(nx * fy - ny * fx);
     slip_sq[c] = sx * sx + sy * sy + sz * sz;
@@ -230,13 +240,15 @@ friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const 
     const Geometry g = geometry<INVERSE>(local, i, j);
     const double gap = g.r - g.radsum;
     bool sustained = false, resolved = true;
+    double shear_log = 0.0;    // the shear film's logarithm, from the normal film's (WET)
     // Dry: the film terms are 0 (six_pi_mu = 0).
-    const lub::NormalForce fn = EVENTS
-                                    ? lub::contact_event_force<WET, GRID>(normal, gap, g.film, g.m_e, g.u_n, resolved)
-                                    : lub::sustained_contact_force<GRID>(normal, gap, g.film, g.m_e, g.u_n, sustained);
+    const lub::NormalForce fn =
+        EVENTS ? lub::contact_event_force<WET, GRID>(normal, gap, g.film, g.m_e, g.u_n, resolved, shear_log)
+               : lub::sustained_contact_force<GRID>(normal, gap, g.film, g.m_e, g.u_n, sustained);
     const bool apart = !EVENTS & !lub::contact_possible(gap, g.u_n, dt);
-    const double film_apart =
-        WET & !EVENTS ? lub::film_force_apart<GRID>(normal.lubrication, gap, g.film, g.m_e, g.u_n, dt, inv_dt) : 0.0;
+    const double film_apart = WET & !EVENTS ? lub::film_force_apart<GRID>(normal.lubrication, gap, g.film, g.m_e, g.u_n,
+                                                                          dt, inv_dt, shear_log)
+                                            : 0.0;
     // The spring acts: in sustained contact and touched (EVENTS: in overlap).
     const bool stick = EVENTS ? gap < 0.0 : sustained & (touched[c] != 0.0);
     // Whether the lane is done here, as doubles (a pair of immovable atoms, m_e = 0, is not: the
@@ -289,23 +301,23 @@ friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const 
     double hx = 0.0, hy = 0.0, hz = 0.0;
     if (SHEAR) {
       // 2 pi mu R_e ln(eps_al / max(eps, eps_1)) between eps_2 and eps_al (saturated in overlap).
-      const double eps = gap / g.film.value;
-      const double eps_al = GRID ? std::max(dx_al * (1.0 / g.film.value), eps_1) : normal.lubrication.eps_activation;
+      const double eps = gap * g.film.inverse;
+      const double eps_al = GRID ? std::max(dx_al * g.film.inverse, eps_1) : normal.lubrication.eps_activation;
       const double in_film = (eps < eps_al) & (eps > eps_2) ? on : 0.0;
       const double mass = ok ? m_t : 1.0;
-      const double rate = in_film * tm.two_pi_mu * (radi * radj / g.radsum) *
-                          lub::log_inline(eps_al / std::max(eps, eps_1)) * tm.dt / mass;
+      const double rate = in_film * tm.two_pi_mu * (radi * radj / g.radsum) * shear_log * tm.dt / mass;
       const double damping = lub::one_minus_exp_neg_inline(rate) * mass / tm.dt;
       hx = -damping * sx, hy = -damping * sy, hz = -damping * sz;
       fx += hx, fy += hy, fz += hz;
     }
     const double normal_total = stick | EVENTS ? fn.total() : film_apart;
     const double film_total = stick | EVENTS ? fn.lubrication : film_apart;
-    fpair[c] = EVENTS ? (ok ? normal_total * g.rinv : 0.0) : on * normal_total * g.rinv;
+    const double normal = EVENTS ? (ok ? normal_total * g.rinv : 0.0) : on * normal_total * g.rinv;
+    fpair[c] = normal;
     film_force[c] = EVENTS ? (ok ? film_total : 0.0) : on * film_total;
     capacity[c] = lub::film_capacity(g.m_e, g.u_n);
     energy[c] = EVENTS ? (spring ? fn.energy : 0.0) : in_contact * fn.energy;
-    force_x[c] = fx, force_y[c] = fy, force_z[c] = fz;
+    force_x[c] = g.delx * normal + fx, force_y[c] = g.dely * normal + fy, force_z[c] = g.delz * normal + fz;
     // -n x F: the torque on i per unit of R_i (on j per unit of R_j).
     torque_x[c] = -(ny * fz - nz * fy), torque_y[c] = -(nz * fx - nx * fz), torque_z[c] = -(nx * fy - ny * fx);
     shear_x[c] = hx, shear_y[c] = hy, shear_z[c] = hz;
@@ -325,22 +337,22 @@ friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const 
 // Each entry point compiles its own loops (the plain ones exactly as without contact masses).
 VECTOR_PAIRS_CLONES
 void film_only(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n,
-               double *fpair, double *film, double *capacity)
+               const ForceOut &force, double *film, double *capacity)
 {
   if (model.lubrication.grid_spacing > 0.0)
-    film_only_loop<true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+    film_only_loop<true, false>(atoms, model, pair_i, pair_j, n, force.x, force.y, force.z, film, capacity);
   else
-    film_only_loop<false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+    film_only_loop<false, false>(atoms, model, pair_i, pair_j, n, force.x, force.y, force.z, film, capacity);
 }
 
 VECTOR_PAIRS_CLONES
 void film_only_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j,
-                          int n, double *fpair, double *film, double *capacity)
+                          int n, const ForceOut &force, double *film, double *capacity)
 {
   if (model.lubrication.grid_spacing > 0.0)
-    film_only_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+    film_only_loop<true, true>(atoms, model, pair_i, pair_j, n, force.x, force.y, force.z, film, capacity);
   else
-    film_only_loop<false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity);
+    film_only_loop<false, true>(atoms, model, pair_i, pair_j, n, force.x, force.y, force.z, film, capacity);
 }
 
 // The loop LOOP<WET, GRID, INVERSE> for the model's film: dry, wet with a grid, wet without.
@@ -357,50 +369,59 @@ void film_only_by_inverse(const Atoms &atoms, const lub::NormalModel &model, con
 
 VECTOR_PAIRS_CLONES
 void contact_or_film(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n,
-                     double *fpair, double *film, double *capacity, double *energy, double *done)
+                     const ForceOut &force, double *film, double *capacity, double *energy, double *done)
 {
-  NORMAL_LOOP(contact_or_film_loop, false, atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  NORMAL_LOOP(contact_or_film_loop, false, atoms, model, pair_i, pair_j, n, force.x, force.y, force.z, film, capacity,
+              energy, done);
 }
 
 VECTOR_PAIRS_CLONES
 void contact_or_film_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j,
-                                int n, double *fpair, double *film, double *capacity, double *energy, double *done)
+                                int n, const ForceOut &force, double *film, double *capacity, double *energy,
+                                double *done)
 {
-  NORMAL_LOOP(contact_or_film_loop, true, atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  NORMAL_LOOP(contact_or_film_loop, true, atoms, model, pair_i, pair_j, n, force.x, force.y, force.z, film, capacity,
+              energy, done);
 }
 
 VECTOR_PAIRS_CLONES
 void contact_exits(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n,
-                   double *fpair, double *film, double *capacity, double *energy)
+                   const ForceOut &force, double *film, double *capacity, double *energy)
 {
-  NORMAL_LOOP(contact_exit_loop, false, atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
+  NORMAL_LOOP(contact_exit_loop, false, atoms, model, pair_i, pair_j, n, force.x, force.y, force.z, film, capacity,
+              energy);
 }
 
 VECTOR_PAIRS_CLONES
 void contact_exits_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j,
-                              int n, double *fpair, double *film, double *capacity, double *energy)
+                              int n, const ForceOut &force, double *film, double *capacity, double *energy)
 {
-  NORMAL_LOOP(contact_exit_loop, true, atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy);
+  NORMAL_LOOP(contact_exit_loop, true, atoms, model, pair_i, pair_j, n, force.x, force.y, force.z, film, capacity,
+              energy);
 }
 
 VECTOR_PAIRS_CLONES
 void contact_events(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j, int n,
-                    double *fpair, double *film, double *capacity, double *energy, double *done)
+                    const ForceOut &force, double *film, double *capacity, double *energy, double *done)
 {
-  NORMAL_LOOP(contact_event_loop, false, atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  NORMAL_LOOP(contact_event_loop, false, atoms, model, pair_i, pair_j, n, force.x, force.y, force.z, film, capacity,
+              energy, done);
 }
 
 VECTOR_PAIRS_CLONES
 void contact_events_by_inverse(const Atoms &atoms, const lub::NormalModel &model, const int *pair_i, const int *pair_j,
-                               int n, double *fpair, double *film, double *capacity, double *energy, double *done)
+                               int n, const ForceOut &force, double *film, double *capacity, double *energy,
+                               double *done)
 {
-  NORMAL_LOOP(contact_event_loop, true, atoms, model, pair_i, pair_j, n, fpair, film, capacity, energy, done);
+  NORMAL_LOOP(contact_event_loop, true, atoms, model, pair_i, pair_j, n, force.x, force.y, force.z, film, capacity,
+              energy, done);
 }
 
 #undef NORMAL_LOOP
 
 #define SHEAR_OUTPUTS(o)                                                                                               \
-  o.shear_x, o.shear_y, o.shear_z, o.torque_x, o.torque_y, o.torque_z, o.slip_sq, o.tangential_mass
+  o.force_x, o.force_y, o.force_z, o.shear_x, o.shear_y, o.shear_z, o.torque_x, o.torque_y, o.torque_z, o.slip_sq,     \
+      o.tangential_mass
 
 VECTOR_PAIRS_CLONES
 void film_shear_only(const Atoms &atoms, const lub::ContactModel &model, const int *pair_i, const int *pair_j, int n,

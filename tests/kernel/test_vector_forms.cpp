@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 using namespace lubricated;
@@ -403,4 +404,51 @@ TEST(ShearFilmApart, EqualsTheShearFilmForce)
     EXPECT_NEAR(-damping * s.x, f.x, 1e-12 * std::fabs(f.x) + 1e-300) << eps << " " << m_t;
     EXPECT_NEAR(-damping * s.y, f.y, 1e-12 * std::fabs(f.y) + 1e-300);
   }
+}
+
+// The shear film's logarithm that the normal film's logarithms give (film_force_apart's
+// shear_log) against std::log(eps_al / max(eps, eps_1)) inside the film (eps_2 < eps < eps_al),
+// over fixed and grid activations, both signs of the gap and motion: within the rounding of a
+// difference of two log_inline results (each 8 ulps of its size, InlineLog.SharedDivision) and
+// of std::log's argument, so that the shear film's coefficient is that of shear_film_force()
+// to 1e-15 of 2 pi mu R_e |ln eps_1|.
+TEST(ShearFilmApart, TheNormalFilmsLogarithmIsTheShearFilms)
+{
+  Draw d(29);
+  int inside = 0, saturated = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    Coefficients c;
+    c.e_dry = 0.9;
+    const bool grid = trial % 2 == 0;
+    draw_film(d, grid, c);
+    ASSERT_EQ(validate(c), "");
+    const double dt = d.log_uniform(1e-8, 1e-3);
+    const NormalModel m = make_normal_model(c, Partner::particle, dt);
+    for (int state = 0; state < 100; ++state) {
+      const auto [radius, mass] = draw_pair(d);
+      const double eps_al = m.lubrication.activation_for(radius);
+      const double eps1 = m.lubrication.eps_saturation;
+      // Inside the film: from just above eps_2 (in overlap, saturated) to eps_al.
+      const double eps =
+          state % 4 == 0 ? d.uniform(0.9 * m.lubrication.eps_release, eps1) : eps1 * d.log_uniform(1.0, eps_al / eps1);
+      if (!(eps < eps_al && eps > m.lubrication.eps_release)) continue;
+      const double gap = eps * radius.value;
+      const double u_n = radius.value / dt * d.uniform(-0.5, 0.5) * eps_al;
+      double shear_log = NAN;
+      if (grid)
+        film_force_apart<true>(m.lubrication, gap, radius, mass, u_n, dt, 1.0 / dt, shear_log);
+      else
+        film_force_apart<false>(m.lubrication, gap, radius, mass, u_n, dt, 1.0 / dt, shear_log);
+      const double eps_used = gap * radius.inverse;
+      const double expected = std::log(eps_al / std::max(eps_used, eps1));
+      const double eps_machine = std::numeric_limits<double>::epsilon();
+      const double bound =
+          8.0 * eps_machine * (std::fabs(std::log(eps_al)) + std::fabs(std::log(std::max(eps_used, eps1)))) +
+          2.0 * eps_machine * std::fabs(expected);
+      ASSERT_NEAR(shear_log, expected, bound) << "eps " << eps_used << " eps_al " << eps_al;
+      ++(eps_used < eps1 ? saturated : inside);
+    }
+  }
+  EXPECT_GT(inside, 15000);
+  EXPECT_GT(saturated, 5000);
 }

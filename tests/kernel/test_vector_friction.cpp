@@ -172,9 +172,16 @@ void check_model(const Coefficients &c, bool inverse_masses, bool events, unsign
                  spread(fp.normal.lubrication, fm.normal.lubrication));
     expect_close(col(3)[k], f.normal.energy, std::fabs(f.normal.energy), "energy", k,
                  spread(fp.normal.energy, fm.normal.energy));
-    expect_close(col(4)[k], f.tangential.x, force_scale, "force x", k, spread(fp.tangential.x, fm.tangential.x));
-    expect_close(col(5)[k], f.tangential.y, force_scale, "force y", k, spread(fp.tangential.y, fm.tangential.y));
-    expect_close(col(6)[k], f.tangential.z, force_scale, "force z", k, spread(fp.tangential.z, fm.tangential.z));
+    // The whole force on i: the normal force along n and the tangential force.
+    auto whole = [&](const ContactForces &forces) {
+      return Vec3{forces.normal.total() * p.n.x + forces.tangential.x,
+                  forces.normal.total() * p.n.y + forces.tangential.y,
+                  forces.normal.total() * p.n.z + forces.tangential.z};
+    };
+    const Vec3 w = whole(f), wp = whole(fp), wm = whole(fm);
+    expect_close(col(4)[k], w.x, 1e2 * force_scale, "force x", k, spread(wp.x, wm.x));
+    expect_close(col(5)[k], w.y, 1e2 * force_scale, "force y", k, spread(wp.y, wm.y));
+    expect_close(col(6)[k], w.z, 1e2 * force_scale, "force z", k, spread(wp.z, wm.z));
     expect_close(col(7)[k] * s.radius[i], f.torque_i.x, force_scale * s.radius[i], "torque x", k,
                  spread(fp.torque_i.x, fm.torque_i.x));
     expect_close(col(9)[k] * s.radius[j], f.torque_j.z, force_scale * s.radius[j], "torque j z", k,
