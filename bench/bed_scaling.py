@@ -10,6 +10,7 @@ overhead, not speed-up; on a 16-core machine pass --ranks 1 2 4 8 16.
 """
 import argparse
 import datetime
+import os
 import pathlib
 import re
 import shutil
@@ -18,6 +19,12 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tools"))
 import lammps_run  # noqa: E402
+
+
+def machine():
+    cpu = next((line.split(":", 1)[1].strip() for line in open("/proc/cpuinfo") if line.startswith("model name")),
+               "unknown CPU")
+    return f"{cpu}, {os.cpu_count()} logical CPUs"
 
 
 def loop_ns(log):
@@ -56,8 +63,9 @@ def main():
         rows.append((ranks, atoms, best, best_twice))
     t1 = rows[0][2] * rows[0][0]
     lines = [f"# Fluidised-bed scaling ({datetime.date.today()})", "",
-             f"{rows[0][1]} spheres, {args.steps} steps, best of 2; this machine: 2 vCPUs "
-             "(about one core of throughput), so 2 ranks measure overhead, not speed-up.", "",
+             f"{rows[0][1]} spheres (scale {args.scale:g}), {args.steps} steps, best of 2; {machine()}. "
+             "On the project's 2-vCPU machine (about one core of throughput) 2 ranks measure overhead, "
+             "not speed-up.", "",
              "| ranks | ns / particle-step (wall) | parallel efficiency | drag fix share |",
              "|---|---|---|---|"]
     for ranks, atoms, ns, ns_twice in rows:

