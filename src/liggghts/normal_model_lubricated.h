@@ -170,6 +170,9 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // Near contact: the film, and the step-exact contact's first and last steps. LIGGGHTS calls
   // this for every pair within its contact distance, which the walls' film sets (reach 0.75 dx
   // of the smallest radius): in a step the pair's are listed for one loop (close_pairs.h).
+  // Called for every pair within the contact distance (about five per sphere and step): the
+  // listing and the test that most pairs fail stay small enough to be inlined into LIGGGHTS's
+  // pair loop, the rest is a call.
   inline void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
   {
     const int t = scdata.itype * (ntypes_ + 1) + scdata.jtype;
@@ -178,13 +181,25 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
       return;
     }
     if (update->dt != dt_) build_models();
-    const lubricated::NormalModel &model = models_[t];
     if (!(scdata.rsq > 0.0)) return;
+    // Most close pairs are out of the film and a step away from contact: known without the square
+    // root (a continued run's kick changes u_n: the whole test there).
+    const double *vi = scdata.v_i, *vj = scdata.v_j;
+    const double dv_dot_del =
+        (vi[0] - vj[0]) * scdata.delta[0] + (vi[1] - vj[1]) * scdata.delta[1] + (vi[2] - vj[2]) * scdata.delta[2];
+    if (!models_[t].may_act(scdata.rsq, dv_dot_del, scdata.radsum) && !step_velocity_->continues()) return;
+    close_pair_acts(scdata, models_[t], i_forces, j_forces);
+  }
+
+ private:
+  __attribute__((noinline)) void close_pair_acts(SurfacesCloseData &scdata, const lubricated::NormalModel &model,
+                                                 ForceData &i_forces, ForceData &j_forces)
+  {
+    const double *vi = scdata.v_i, *vj = scdata.v_j;
+    const bool continued = step_velocity_->continues();
     const double r = std::sqrt(scdata.rsq), r_inverse = 1.0 / r;
     const double en[3] = {scdata.delta[0] * r_inverse, scdata.delta[1] * r_inverse, scdata.delta[2] * r_inverse};
     const double gap = r - scdata.radsum;
-    const double *vi = scdata.v_i, *vj = scdata.v_j;
-    const bool continued = step_velocity_->continues();
     double u_n = (vi[0] - vj[0]) * en[0] + (vi[1] - vj[1]) * en[1] + (vi[2] - vj[2]) * en[2];
     if (continued) u_n -= step_velocity_->kick_along(scdata.i, partner(scdata), en);
     const lubricated::FilmRadius radius = film_radius(scdata);
@@ -201,7 +216,6 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
       record_film(scdata, fn.lubrication * (is_wall_ ? scdata.area_ratio : 1.0), en, m_e, u_n, continued);
   }
 
- private:
   // LAMMPS's group `all` (always the first group).
   static constexpr int all_group_bit = 1;
 

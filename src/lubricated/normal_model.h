@@ -43,6 +43,19 @@ struct NormalModel {
 
   // Largest gap (length) at which the model acts, for a contact of lubrication radius R.
   double reach(double radius) const { return lubrication.reach(radius); }
+
+  // acts() before the square root, for a pair at squared distance rsq whose radii sum to radsum
+  // (a wall: the sphere's radius), dv_dot_del = (v_i - v_j) . (x_i - x_j): false only where
+  // acts() is false. The film's reach is bounded by its largest for a lubrication radius up to
+  // radsum (a pair's 2 r_i r_j / (r_i + r_j) <= radsum / 2, a wall's r_i = radsum); then
+  // gap < reach + |u_n| dt is rsq - |dv_dot_del| dt < (radsum + reach) r, squared where positive.
+  bool may_act(double rsq, double dv_dot_del, double radsum) const
+  {
+    const double outer = radsum + lubrication.reach(radsum);
+    if (!exact) return rsq < outer * outer;
+    const double s = rsq - std::fabs(dv_dot_del) * step.dt;
+    return s <= 0.0 || s * s < outer * outer * rsq;
+  }
 };
 
 // The fixed eps_al of the coefficients: the given one, or with `activation dem` the gap where the

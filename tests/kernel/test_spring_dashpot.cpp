@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 using namespace lubricated;
 
@@ -100,4 +101,58 @@ TEST(NormalForce, ReducedMassOfInverses)
   EXPECT_EQ(f.energy, 0.0);
   for (double gap : {1e-6, 5e-5})
     EXPECT_EQ(film_force_apart<false>(m.lubrication, gap, radius, 0.0, -0.01, m.step.dt, m.step.inv_dt), 0.0);
+}
+
+// NormalModel::may_act, the test before the square root (LIGGGHTS's surfacesClose), is false
+// only where acts() is: over dry, fixed-activation and grid films, the step-exact model and the
+// sampled one, pairs of unequal spheres and walls (radsum = the sphere's radius, film radius
+// the same), gaps from overlap to beyond the reach and speeds from creeping to a gap per step.
+// It leaves most far pairs out (the test that makes it worth having).
+TEST(NormalModel, MayActWhereverItActs)
+{
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int acting = 0, left_out = 0, far = 0;
+  for (int trial = 0; trial < 60000; trial++) {
+    Coefficients c;
+    c.e_dry = 0.9;
+    c.n_contact = 8;
+    const int film = trial % 3;    // dry, fixed eps_al, grid
+    if (film > 0) c.viscosity = 1e-3;
+    if (film == 1) c.eps_activation = 0.05 + 0.5 * unit(rng);
+    if (film == 2) c.grid_spacing = 1e-5 + 2e-4 * unit(rng);
+    const bool wall = trial % 5 == 0;
+    const double dt = 1e-5;
+    NormalModel m = make_normal_model(c, wall ? Partner::wall : Partner::particle, dt);
+    m.exact = trial % 7 != 0;
+    const double ri = 1e-3 * (0.5 + unit(rng)), rj = 1e-3 * (0.5 + unit(rng));
+    const double radsum = wall ? ri : ri + rj;
+    const double radius = wall ? ri : film_radius_pair(ri, rj).value;
+    const double gap = radsum * (-0.01 + 0.6 * unit(rng) * unit(rng));
+    const double r = radsum + gap;
+    // A random direction of x_i - x_j and of the relative velocity.
+    double n[3] = {unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5};
+    const double norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const double speed = std::pow(10.0, -4.0 + 6.0 * unit(rng)) * (unit(rng) < 0.5 ? -1.0 : 1.0);
+    const double dv[3] = {speed * (unit(rng) - 0.5), speed * (unit(rng) - 0.5), speed * (unit(rng) - 0.5)};
+    double del[3], dv_dot_del = 0.0;
+    for (int d = 0; d < 3; d++) {
+      del[d] = r * n[d] / norm;
+      dv_dot_del += dv[d] * del[d];
+    }
+    const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+    const double u_n = dv_dot_del / std::sqrt(rsq);
+    const bool acts = m.acts(std::sqrt(rsq) - radsum, radius, u_n);
+    const bool may = m.may_act(rsq, dv_dot_del, radsum);
+    if (acts) {
+      ASSERT_TRUE(may) << "trial " << trial << " gap " << gap << " u_n " << u_n << " wall " << wall;
+      ++acting;
+    }
+    if (gap > 0.35 * radsum) {
+      ++far;
+      left_out += !may;
+    }
+  }
+  EXPECT_GT(acting, 10000);
+  EXPECT_GT(left_out, far / 2);
 }
