@@ -55,6 +55,11 @@ class FixContactHistory : public Fix {
   // History of list entry jj of atom i: touched flag and nvalue doubles, in i's frame.
   char *touched(int i) { return touch.data() + offset[i]; }
   double *values(int i) { return value.data() + offset[i] * nvalue; }
+  // The same as flat arrays: entry e = entry(i, jj) has touched_all()[e] and nvalue doubles
+  // from values_all() + nvalue e (loops that keep the entries and both pointers).
+  int entry(int i, int jj) const { return offset[i] + jj; }
+  char *touched_all() { return touch.data(); }
+  double *values_all() { return value.data(); }
 
  protected:
   int nvalue;

@@ -47,14 +47,28 @@ __attribute__((always_inline)) inline double exp_inline(double x)
   return scale * p;
 }
 
-// 1 - exp(-x) for x >= 0, within a few units in the last place of -std::expm1(-x): up to 1/2
-// by its alternating series x (1 - x/2 (1 - x/3 (...))) to x^17 (0.5^18/18! < 1e-21, no
-// cancellation), above by 1 - exp_inline(-x).
+// 1 - exp(-x) for x >= 0, within a few units in the last place of -std::expm1(-x), by one
+// series for every x (no second form selected): -x = k ln 2 + r, |r| <= ln 2 / 2, exp(r) - 1 =
+// r (1 + r/2 (1 + r/3 (...))) to r^15 (the next term below 1e-18 of it), and
+// 1 - exp(-x) = (1 - 2^k) - 2^k (exp(r) - 1): for x below ln 2 / 2 (k = 0, r = -x exactly) the
+// series alone, no cancellation; above, a sum in [0.29, 1). x clamped at 708 (1 there).
 __attribute__((always_inline)) inline double one_minus_exp_neg_inline(double x)
 {
-  const double small = x * detail::nested_series<2, 17>(-x);
-  const double large = 1.0 - exp_inline(-std::min(x, 700.0));
-  return x <= 0.5 ? small : large;
+  const double y = -std::min(x, 708.0);
+  constexpr double inv_ln2 = 1.44269504088896338700e+00;
+  constexpr double ln2_hi = 6.93147180369123816490e-01, ln2_lo = 1.90821492927058770002e-10;
+  constexpr double round_magic = 6755399441055744.0;    // 1.5 2^52: adding it rounds to an integer
+  const double k = (y * inv_ln2 + round_magic) - round_magic;
+  const double r = (y - k * ln2_hi) - k * ln2_lo;
+  const double exp_r_minus_1 = r * detail::nested_series<2, 15>(r);
+  // 2^k as in exp_inline (k + 1023 in [1, 1023] here).
+  const double biased = k + (4503599627370496.0 + 1023.0);
+  std::uint64_t bits;
+  std::memcpy(&bits, &biased, sizeof bits);
+  const std::uint64_t scale_bits = (bits & 0x7FFull) << 52;
+  double scale;
+  std::memcpy(&scale, &scale_bits, sizeof scale);
+  return (1.0 - scale) - scale * exp_r_minus_1;
 }
 
 }    // namespace lubricated

@@ -151,11 +151,11 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
   struct Deferred {
     const lubricated::ContactModel *model = nullptr;
     int n = 0;
-    int i[chunk], j[chunk], jj[chunk];
+    int i[chunk], j[chunk], jj[chunk], entry[chunk];    // entry: the history's (friction)
     double touched[chunk], delta[3][chunk];
   };
   Deferred events, exits;
-  int left[chunk];
+  int left[chunk], entry[chunk];    // entry: each pair's in the history (friction)
   // Room in a deferred list for count pairs of this model: the list runs first if it could not
   // take them or holds another model's.
   auto defer = [&](Deferred &list, const lubricated::ContactModel &model, int count, auto &run) {
@@ -164,18 +164,22 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
   };
   // The frictional loops' forces, torques and elongations scattered, the films' budget records
   // (the pairs not done have no film: no record); returns how many are not done, listed in out.
+  // The history through its flat arrays (list_entry: each pair's entry), whose pointers then
+  // stay in registers (a char store may alias what values(i) and touched(i) read).
+  double *const history_values = history ? history->values_all() : nullptr;
+  char *const history_touched = history ? history->touched_all() : nullptr;
   auto scatter_friction = [&](const lubricated::ContactModel &model, const int *list_i, const int *list_j,
-                              const int *list_jj, int count, int *out) __attribute__((always_inline))
+                              const int *list_entry, int count, int *out) __attribute__((always_inline))
   {
     int nrest = 0;
     for (int c = 0; c < count; c++) {
       // Branch-free: the pairs not done have zero forces and their history unchanged here.
-      const int i = list_i[c];
-      apply_tangential(i, list_j[c], force[0][c], force[1][c], force[2][c], torque_unit[0][c], torque_unit[1][c],
-                       torque_unit[2][c], energy[c], on[c]);
-      double *h = history->values(i) + 3 * list_jj[c];
+      apply_tangential(list_i[c], list_j[c], force[0][c], force[1][c], force[2][c], torque_unit[0][c],
+                       torque_unit[1][c], torque_unit[2][c], energy[c], on[c]);
+      const int e = list_entry[c];
+      double *h = history_values + 3 * e;
       h[0] = next[0][c], h[1] = next[1][c], h[2] = next[2][c];
-      history->touched(i)[list_jj[c]] = next_touched[c] != 0.0;
+      history_touched[e] = next_touched[c] != 0.0;
       out[nrest] = c;
       nrest += on[c] == 0.0;
     }
@@ -193,7 +197,7 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
       vector_pairs::friction_events_by_inverse(atoms, model, in, events.n, friction_out);
     else
       vector_pairs::friction_events(atoms, model, in, events.n, friction_out);
-    const int nleft = scatter_friction(model, events.i, events.j, events.jj, events.n, left);
+    const int nleft = scatter_friction(model, events.i, events.j, events.entry, events.n, left);
     for (int k = 0; k < nleft; k++)
       evaluate(events.i[left[k]], events.j[left[k]], events.jj[left[k]]);
     events.n = 0;
@@ -207,16 +211,18 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
       return;
     }
     for (int c = 0; c < n; c++) {
-      const double *h = history->values(pair_i[c]) + 3 * pair_jj[c];
+      const int e = history->entry(pair_i[c], pair_jj[c]);
+      entry[c] = e;
+      const double *h = history_values + 3 * e;
       delta[0][c] = h[0], delta[1][c] = h[1], delta[2][c] = h[2];
-      touched[c] = history->touched(pair_i[c])[pair_jj[c]] ? 1.0 : 0.0;
+      touched[c] = history_touched[e] ? 1.0 : 0.0;
     }
     const vector_pairs::FrictionIn in{pair_i, pair_j, touched, delta[0], delta[1], delta[2]};
     if (atoms.inverse_mass)
       vector_pairs::friction_contacts_by_inverse(atoms, model, in, n, friction_out);
     else
       vector_pairs::friction_contacts(atoms, model, in, n, friction_out);
-    const int nrest = scatter_friction(model, pair_i, pair_j, pair_jj, n, rest);
+    const int nrest = scatter_friction(model, pair_i, pair_j, entry, n, rest);
     if (model.normal.calibrated()) {
       for (int k = 0; k < nrest; k++)
         evaluate(pair_i[rest[k]], pair_j[rest[k]], pair_jj[rest[k]]);
@@ -225,7 +231,7 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
     defer(events, model, nrest, run_friction_events);
     for (int k = 0; k < nrest; k++) {
       const int c = rest[k], e = events.n + k;
-      events.i[e] = pair_i[c], events.j[e] = pair_j[c], events.jj[e] = pair_jj[c];
+      events.i[e] = pair_i[c], events.j[e] = pair_j[c], events.jj[e] = pair_jj[c], events.entry[e] = entry[c];
       events.touched[e] = touched[c];
       events.delta[0][e] = delta[0][c], events.delta[1][e] = delta[1][c], events.delta[2][e] = delta[2][c];
     }
