@@ -22,6 +22,29 @@ template <int N, int LAST> __attribute__((always_inline)) inline double nested_s
     return 1.0 + x * (1.0 / N) * nested_series<N + 1, LAST>(x);
 }
 
+// 2^k for an integral k with k + 1023 in [1, 2046], from the bits of k + 1023 moved into the
+// exponent field: the mantissa of 2^52 + n holds n (no int64 conversion, which AVX2 lacks).
+__attribute__((always_inline)) inline double power_of_two(double k)
+{
+  const double biased = k + (4503599627370496.0 + 1023.0);
+  std::uint64_t bits;
+  std::memcpy(&bits, &biased, sizeof bits);
+  const std::uint64_t scale_bits = (bits & 0x7FFull) << 52;
+  double scale;
+  std::memcpy(&scale, &scale_bits, sizeof scale);
+  return scale;
+}
+
+// y = k ln 2 + r with k integral and |r| <= ln 2 / 2 (ln 2 in two parts: r exact to rounding).
+__attribute__((always_inline)) inline void reduce_by_ln2(double y, double &k, double &r)
+{
+  constexpr double inv_ln2 = 1.44269504088896338700e+00;
+  constexpr double ln2_hi = 6.93147180369123816490e-01, ln2_lo = 1.90821492927058770002e-10;
+  constexpr double round_magic = 6755399441055744.0;    // 1.5 2^52: adding it rounds to an integer
+  k = (y * inv_ln2 + round_magic) - round_magic;
+  r = (y - k * ln2_hi) - k * ln2_lo;
+}
+
 }    // namespace detail
 
 // exp(x) within a few units in the last place of std::exp, x clamped to [-708, 709] (beyond,
@@ -29,22 +52,9 @@ template <int N, int LAST> __attribute__((always_inline)) inline double nested_s
 // series to r^13 (the next term is below 1e-17).
 __attribute__((always_inline)) inline double exp_inline(double x)
 {
-  const double y = std::min(std::max(x, -708.0), 709.0);
-  constexpr double inv_ln2 = 1.44269504088896338700e+00;
-  constexpr double ln2_hi = 6.93147180369123816490e-01, ln2_lo = 1.90821492927058770002e-10;
-  constexpr double round_magic = 6755399441055744.0;    // 1.5 2^52: adding it rounds to an integer
-  const double k = (y * inv_ln2 + round_magic) - round_magic;
-  const double r = (y - k * ln2_hi) - k * ln2_lo;
-  const double p = detail::nested_series<1, 13>(r);
-  // 2^k from the bits of k + 1023 (in [1, 2046] here) moved into the exponent field; the
-  // mantissa of 2^52 + n holds n (no int64 conversion, which AVX2 lacks).
-  const double biased = k + (4503599627370496.0 + 1023.0);
-  std::uint64_t bits;
-  std::memcpy(&bits, &biased, sizeof bits);
-  const std::uint64_t scale_bits = (bits & 0x7FFull) << 52;
-  double scale;
-  std::memcpy(&scale, &scale_bits, sizeof scale);
-  return scale * p;
+  double k, r;
+  detail::reduce_by_ln2(std::min(std::max(x, -708.0), 709.0), k, r);
+  return detail::power_of_two(k) * detail::nested_series<1, 13>(r);
 }
 
 // 1 - exp(-x) for x >= 0, within a few units in the last place of -std::expm1(-x), by one
@@ -54,20 +64,10 @@ __attribute__((always_inline)) inline double exp_inline(double x)
 // series alone, no cancellation; above, a sum in [0.29, 1). x clamped at 708 (1 there).
 __attribute__((always_inline)) inline double one_minus_exp_neg_inline(double x)
 {
-  const double y = -std::min(x, 708.0);
-  constexpr double inv_ln2 = 1.44269504088896338700e+00;
-  constexpr double ln2_hi = 6.93147180369123816490e-01, ln2_lo = 1.90821492927058770002e-10;
-  constexpr double round_magic = 6755399441055744.0;    // 1.5 2^52: adding it rounds to an integer
-  const double k = (y * inv_ln2 + round_magic) - round_magic;
-  const double r = (y - k * ln2_hi) - k * ln2_lo;
+  double k, r;
+  detail::reduce_by_ln2(-std::min(x, 708.0), k, r);
   const double exp_r_minus_1 = r * detail::nested_series<2, 15>(r);
-  // 2^k as in exp_inline (k + 1023 in [1, 1023] here).
-  const double biased = k + (4503599627370496.0 + 1023.0);
-  std::uint64_t bits;
-  std::memcpy(&bits, &biased, sizeof bits);
-  const std::uint64_t scale_bits = (bits & 0x7FFull) << 52;
-  double scale;
-  std::memcpy(&scale, &scale_bits, sizeof scale);
+  const double scale = detail::power_of_two(k);    // k in [-1022, 0] here
   return (1.0 - scale) - scale * exp_r_minus_1;
 }
 
