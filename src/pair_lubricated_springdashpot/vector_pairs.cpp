@@ -149,11 +149,11 @@ contact_event_loop(const Atoms &atoms, const lub::NormalModel &model, const int 
 
 template <bool GRID, bool INVERSE> __attribute__((always_inline)) static inline void
 film_shear_only_loop(const Atoms &atoms, const lub::ContactModel &model, const int *__restrict pair_i,
-                     const int *__restrict pair_j, int n, double *__restrict fpair, double *__restrict film_force,
-                     double *__restrict capacity, double *__restrict force_x, double *__restrict force_y,
-                     double *__restrict force_z, double *__restrict shear_x, double *__restrict shear_y,
-                     double *__restrict shear_z, double *__restrict torque_x, double *__restrict torque_y,
-                     double *__restrict torque_z, double *__restrict slip_sq, double *__restrict tangential_mass)
+                     const int *__restrict pair_j, int n, double *__restrict film_force, double *__restrict capacity,
+                     double *__restrict force_x, double *__restrict force_y, double *__restrict force_z,
+                     double *__restrict shear_x, double *__restrict shear_y, double *__restrict shear_z,
+                     double *__restrict torque_x, double *__restrict torque_y, double *__restrict torque_z,
+                     double *__restrict slip_sq, double *__restrict tangential_mass)
 {
   // The outputs as restrict parameters: restrict pointers read from a struct do not convince
   // GCC 12 that the stores do not alias (the loop then stays scalar).
@@ -171,7 +171,6 @@ film_shear_only_loop(const Atoms &atoms, const lub::ContactModel &model, const i
     double shear_log;    // the shear film's logarithm, from the normal film's
     const double film = lub::film_force_apart<GRID>(film_law, gap, g.film, g.m_e, g.u_n, dt, inv_dt, shear_log);
     const double normal = g.rinv * film;
-    fpair[c] = normal;
     film_force[c] = film;
     capacity[c] = lub::film_capacity(g.m_e, g.u_n);
     // The slip of the surfaces (lubricated/tangential.h) and the shear film on it, in plain
@@ -425,23 +424,22 @@ void contact_events_by_inverse(const Atoms &atoms, const lub::NormalModel &model
 
 VECTOR_PAIRS_CLONES
 void film_shear_only(const Atoms &atoms, const lub::ContactModel &model, const int *pair_i, const int *pair_j, int n,
-                     double *fpair, double *film, double *capacity, const ShearOut &shear)
+                     double *film, double *capacity, const ShearOut &shear)
 {
   if (model.normal.lubrication.grid_spacing > 0.0)
-    film_shear_only_loop<true, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, SHEAR_OUTPUTS(shear));
+    film_shear_only_loop<true, false>(atoms, model, pair_i, pair_j, n, film, capacity, SHEAR_OUTPUTS(shear));
   else
-    film_shear_only_loop<false, false>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, SHEAR_OUTPUTS(shear));
+    film_shear_only_loop<false, false>(atoms, model, pair_i, pair_j, n, film, capacity, SHEAR_OUTPUTS(shear));
 }
 
 VECTOR_PAIRS_CLONES
 void film_shear_only_by_inverse(const Atoms &atoms, const lub::ContactModel &model, const int *pair_i,
-                                const int *pair_j, int n, double *fpair, double *film, double *capacity,
-                                const ShearOut &shear)
+                                const int *pair_j, int n, double *film, double *capacity, const ShearOut &shear)
 {
   if (model.normal.lubrication.grid_spacing > 0.0)
-    film_shear_only_loop<true, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, SHEAR_OUTPUTS(shear));
+    film_shear_only_loop<true, true>(atoms, model, pair_i, pair_j, n, film, capacity, SHEAR_OUTPUTS(shear));
   else
-    film_shear_only_loop<false, true>(atoms, model, pair_i, pair_j, n, fpair, film, capacity, SHEAR_OUTPUTS(shear));
+    film_shear_only_loop<false, true>(atoms, model, pair_i, pair_j, n, film, capacity, SHEAR_OUTPUTS(shear));
 }
 
 #define CONTACT_ARGUMENTS(o)                                                                                           \

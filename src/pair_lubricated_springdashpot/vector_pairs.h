@@ -38,7 +38,7 @@ void film_only(const Atoms &atoms, const lubricated::NormalModel &model, const i
                const ForceOut &force, double *film, double *capacity);
 
 // Pairs that may touch within the step (done as doubles): done[c] = 1 where pair c is in
-// sustained contact or stays apart over the step (the film alone), with its fpair and spring
+// sustained contact or stays apart over the step (the film alone), with its force and spring
 // energy[c]; 2 where it leaves the overlap within the step (for contact_exits), 0 where a
 // contact starts or ends otherwise, for the general loop (force, energy 0 for both).
 void contact_or_film(const Atoms &atoms, const lubricated::NormalModel &model, const int *pair_i, const int *pair_j,
@@ -79,10 +79,9 @@ struct ShearOut {
       *tangential_mass;
 };
 void film_shear_only(const Atoms &atoms, const lubricated::ContactModel &model, const int *pair_i, const int *pair_j,
-                     int n, double *fpair, double *film, double *capacity, const ShearOut &shear);
+                     int n, double *film, double *capacity, const ShearOut &shear);
 void film_shear_only_by_inverse(const Atoms &atoms, const lubricated::ContactModel &model, const int *pair_i,
-                                const int *pair_j, int n, double *fpair, double *film, double *capacity,
-                                const ShearOut &shear);
+                                const int *pair_j, int n, double *film, double *capacity, const ShearOut &shear);
 
 // Kept pairs with friction (no rolling resistance) and maybe a film and a shear film: done[c] =
 // 1.0 where pair c is in overlap now, a step ago and a step ahead (as contact_or_film decides)
