@@ -169,10 +169,9 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
 
   // Near contact: the film, and the step-exact contact's first and last steps. LIGGGHTS calls
   // this for every pair within its contact distance, which the walls' film sets (reach 0.75 dx
-  // of the smallest radius): in a step the pair's are listed for one loop (close_pairs.h).
-  // Called for every pair within the contact distance (about five per sphere and step): the
-  // listing and the test that most pairs fail stay small enough to be inlined into LIGGGHTS's
-  // pair loop, the rest is a call.
+  // of the smallest radius; about five pairs per sphere and step): in a step the pair's are
+  // listed for one loop (close_pairs.h). The listing and the test that most pairs fail stay
+  // small enough to be inlined into LIGGGHTS's pair loop, the rest is a call.
   inline void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
   {
     const int t = scdata.itype * (ntypes_ + 1) + scdata.jtype;
