@@ -275,35 +275,83 @@ void FixWallLubrication::compute_walls(bool defer_films)
     planes[k] = {w.axis, static_cast<int>(k), static_cast<double>(w.side), w.position, s[w.axis], u[w.axis]};
   }
   const int nplanes = planes_only ? static_cast<int>(walls.size()) : 0;
-  auto may_act = [&](int i) __attribute__((always_inline))
-  {
-    if (!planes_only) return true;
-    const double r = radius[i];
-    const double *v_step = midpoint && model.normal.exact ? midpoint->step_velocity(i) : v[i];
-    for (int k = 0; k < nplanes; k++) {
-      const Plane &w = planes[k];
-      // as lubricated::wall_point, normal_step_velocity and NormalModel::acts, to round-off
-      const double gap = w.side * (x[i][w.axis] - w.position - w.shift) - r;
-      const double u_n = w.side * (v_step[w.axis] - w.velocity);
-      if (gap >= -r && model.normal.acts(gap, r, u_n)) return true;
-      if (history && history[i][w.slot * HISTORY_PER_WALL + 3] != 0.0) return true;
-    }
-    return false;
-  };
 
   // m_e = m; the body's mass for an atom of a rigid body; an immovable atom is left alone.
-  if (!contact_mass.active()) {
+  const bool by_inverse = contact_mass.active();
+  if (by_inverse) {
+    // Atoms change index only where the lists are rebuilt (or a run starts).
+    if (neighbor->ago == 0 || update->setupflag || static_cast<int>(inverse_mass.size()) < nlocal) {
+      if (static_cast<int>(inverse_mass.size()) < nlocal) inverse_mass.resize(atom->nmax);
+      contact_mass.fill(inverse_mass.data());
+    }
+  }
+  auto evaluate_atom = [&](int i) __attribute__((always_inline))
+  {
+    if (!(mask[i] & groupbit)) return;
+    if (!by_inverse)
+      walls_of_atom(i, rmass[i]);
+    else if (inverse_mass[i] > 0.0)
+      walls_of_atom(i, 1.0 / inverse_mass[i]);
+  };
+  // Other walls: every atom of the group. The midpoint integrator's step velocities: the
+  // planes' test below atom by atom.
+  if (!planes_only || nlocal == 0 || (midpoint && model.normal.exact)) {
+    auto may_act = [&](int i) __attribute__((always_inline))
+    {
+      if (!planes_only) return true;
+      const double r = radius[i];
+      const double *v_step = midpoint->step_velocity(i);
+      for (int k = 0; k < nplanes; k++) {
+        const Plane &w = planes[k];
+        const double gap = w.side * (x[i][w.axis] - w.position - w.shift) - r;
+        const double u_n = w.side * (v_step[w.axis] - w.velocity);
+        if (gap >= -r && model.normal.acts(gap, r, u_n)) return true;
+        if (history && history[i][w.slot * HISTORY_PER_WALL + 3] != 0.0) return true;
+      }
+      return false;
+    };
     for (int i = 0; i < nlocal; i++)
-      if ((mask[i] & groupbit) && may_act(i)) walls_of_atom(i, rmass[i]);
+      if (may_act(i)) evaluate_atom(i);
     warn_behind();
     return;
   }
-  // Atoms change index only where the lists are rebuilt (or a run starts).
-  if (neighbor->ago == 0 || update->setupflag || static_cast<int>(inverse_mass.size()) < nlocal) {
-    if (static_cast<int>(inverse_mass.size()) < nlocal) inverse_mass.resize(atom->nmax);
-    contact_mass.fill(inverse_mass.data());
+  // Planes: per chunk of atoms, a loop without branches (vectorised) marks those a plane may
+  // act on (as lubricated::wall_point, normal_step_velocity and NormalModel::acts, to
+  // round-off) or that hold an elongation at it; then only those are evaluated.
+  constexpr int chunk = 256;
+  double near[chunk];
+  int listed[chunk];
+  const double *__restrict x_all = x[0], *__restrict v_all = v[0];
+  const double *held = history ? history[0] : nullptr;
+  const lub::NormalModel &normal = model.normal;
+  const double step_dt = normal.exact ? normal.step.dt : 0.0;
+  const bool film_on = normal.lubrication.active(), grid_film = normal.lubrication.grid_spacing > 0.0;
+  const double grid_reach = film_on && grid_film ? normal.lubrication.reach(1.0) : 0.0;
+  const double eps_reach = film_on && !grid_film ? normal.lubrication.eps_activation : 0.0;
+  for (int begin = 0; begin < nlocal; begin += chunk) {
+    const int n = std::min(chunk, nlocal - begin);
+    std::fill(near, near + n, 0.0);
+    for (int k = 0; k < nplanes; k++) {
+      const Plane w = planes[k];
+      for (int c = 0; c < n; c++) {
+        const int i = begin + c;
+        const double r = radius[i];
+        const double gap = w.side * (x_all[3 * i + w.axis] - w.position - w.shift) - r;
+        const double u_n = w.side * (v_all[3 * i + w.axis] - w.velocity);
+        const bool acts = (gap >= -r) & (gap < grid_reach + eps_reach * r + std::fabs(u_n) * step_dt);
+        near[c] = acts ? 1.0 : near[c];
+      }
+      if (held)
+        for (int c = 0; c < n; c++)
+          near[c] = held[(begin + c) * history_size + w.slot * HISTORY_PER_WALL + 3] != 0.0 ? 1.0 : near[c];
+    }
+    int nlisted = 0;
+    for (int c = 0; c < n; c++) {
+      listed[nlisted] = begin + c;
+      nlisted += near[c] != 0.0;
+    }
+    for (int k = 0; k < nlisted; k++)
+      evaluate_atom(listed[k]);
   }
-  for (int i = 0; i < nlocal; i++)
-    if ((mask[i] & groupbit) && inverse_mass[i] > 0.0 && may_act(i)) walls_of_atom(i, 1.0 / inverse_mass[i]);
   warn_behind();
 }

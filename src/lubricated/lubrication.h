@@ -187,14 +187,17 @@ struct Lubrication {
   // with f = eps clamped to [eps_1, eps_al] and s = eps clamped to [eps_2, eps_1].
   // shear_log: ln(eps_al / f_a), what the shear film's coefficient needs at eps = after inside
   // the film (ln(eps_al / max(eps, eps_1)) there; tangential.h), from the same logarithms.
-  template <bool GRID> __attribute__((always_inline)) double
-  film_integral_change_inline(double after, double before, const FilmRadius &radius, double &shear_log) const
+  // lambda_al: lambda(eps_al) of the pair (as activation_inline's, within rounding).
+  template <bool GRID> __attribute__((always_inline)) double film_integral_change_inline(double after, double before,
+                                                                                         const FilmRadius &radius,
+                                                                                         double &shear_log,
+                                                                                         double &lambda_al) const
   {
     const double reach = grid_activation * grid_spacing;
     const double eps_al = GRID ? std::max(reach * radius.inverse, eps_saturation) : eps_activation;
     const double f_a = std::min(std::max(after, eps_saturation), eps_al);
     const double f_b = std::min(std::max(before, eps_saturation), eps_al);
-    double l_a, l_b, lambda_al;
+    double l_a, l_b;
     if (GRID) {
       double l_al;
       log_inline(f_a, f_b, eps_al, l_a, l_b, l_al);
@@ -210,6 +213,12 @@ struct Lubrication {
     const double s_b = std::min(std::max(before, eps_release), eps_saturation);
     return expansion.integral(f_b, l_b) - expansion.integral(f_a, l_a) + lambda_al * (f_a - f_b) +
            (lambda_saturated - lambda_al) * (s_b - s_a);
+  }
+  template <bool GRID> __attribute__((always_inline)) double
+  film_integral_change_inline(double after, double before, const FilmRadius &radius, double &shear_log) const
+  {
+    double lambda_al;
+    return film_integral_change_inline<GRID>(after, before, radius, shear_log, lambda_al);
   }
   template <bool GRID> __attribute__((always_inline)) double film_integral_change_inline(double after, double before,
                                                                                          const FilmRadius &radius) const

@@ -224,15 +224,24 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
 // branches or calls, for loops over such pairs that the compiler vectorises. Requires an
 // active film; GRID: whether it has a grid spacing (Lubrication::activation_inline). shear_log:
 // the shear film's logarithm at the gap (Lubrication::film_integral_change_inline).
+// lambda_al: lambda(eps_al) of the pair's film radius (for sustained_contact_force: one
+// logarithm fewer where a loop needs both).
+template <bool GRID> __attribute__((always_inline)) inline double
+film_force_apart(const Lubrication &lub, double gap, const FilmRadius &radius, double reduced_mass, double u_n,
+                 double dt, double inv_dt, double &shear_log, double &lambda_al)
+{
+  const double after = gap * radius.inverse, before = (gap - u_n * dt) * radius.inverse;
+  const double impulse = lub.six_pi_mu * radius.value * radius.value *
+                         lub.film_integral_change_inline<GRID>(after, before, radius, shear_log, lambda_al);
+  return film_force_of_impulse(impulse, reduced_mass * std::fabs(u_n), inv_dt);
+}
 template <bool GRID>
 __attribute__((always_inline)) inline double film_force_apart(const Lubrication &lub, double gap,
                                                               const FilmRadius &radius, double reduced_mass, double u_n,
                                                               double dt, double inv_dt, double &shear_log)
 {
-  const double after = gap * radius.inverse, before = (gap - u_n * dt) * radius.inverse;
-  const double impulse = lub.six_pi_mu * radius.value * radius.value *
-                         lub.film_integral_change_inline<GRID>(after, before, radius, shear_log);
-  return film_force_of_impulse(impulse, reduced_mass * std::fabs(u_n), inv_dt);
+  double lambda_al;
+  return film_force_apart<GRID>(lub, gap, radius, reduced_mass, u_n, dt, inv_dt, shear_log, lambda_al);
 }
 template <bool GRID> __attribute__((always_inline)) inline double film_force_apart(const Lubrication &lub, double gap,
                                                                                    const FilmRadius &radius,

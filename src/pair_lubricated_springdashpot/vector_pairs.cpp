@@ -76,12 +76,17 @@ contact_or_film_loop(const Atoms &atoms, const lub::NormalModel &model, const in
   for (int c = 0; c < n; c++) {
     const Geometry g = geometry<INVERSE>(atoms, pair_i[c], pair_j[c]);
     const double gap = g.r - g.radsum;
+    // Apart over the step (no contact can act): the film alone, as in film_only. Wet, its
+    // lambda(eps_al) serves the sustained contact's saturated film too (one logarithm fewer).
+    double shear_log, lambda_al = 0.0;
+    const double film = WET ? lub::film_force_apart<GRID>(model.lubrication, gap, g.film, g.m_e, g.u_n, dt, inv_dt,
+                                                          shear_log, lambda_al)
+                            : 0.0;
     bool sustained;
-    const lub::NormalForce contact = lub::sustained_contact_force<GRID>(model, gap, g.film, g.m_e, g.u_n, sustained);
-    // Apart over the step (no contact can act): the film alone, as in film_only.
+    const lub::NormalForce contact =
+        WET ? lub::sustained_contact_force(model, gap, g.film, g.m_e, g.u_n, lambda_al, sustained)
+            : lub::sustained_contact_force<GRID>(model, gap, g.film, g.m_e, g.u_n, sustained);
     const bool apart = !lub::contact_possible(gap, g.u_n, dt);
-    const double film =
-        WET ? lub::film_force_apart<GRID>(model.lubrication, gap, g.film, g.m_e, g.u_n, dt, inv_dt) : 0.0;
     const bool known = (sustained | apart) & (g.r > 0.0);
     const double fpair = known ? (sustained ? contact.total() : film) * g.rinv : 0.0;
     force_x[c] = g.delx * fpair, force_y[c] = g.dely * fpair, force_z[c] = g.delz * fpair;
@@ -240,14 +245,16 @@ friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const 
     const double gap = g.r - g.radsum;
     bool sustained = false, resolved = true;
     double shear_log = 0.0;    // the shear film's logarithm, from the normal film's (WET)
+    double lambda_al = 0.0;    // lambda(eps_al), from the film apart's (WET, not EVENTS)
+    const double film_apart = WET & !EVENTS ? lub::film_force_apart<GRID>(normal.lubrication, gap, g.film, g.m_e, g.u_n,
+                                                                          dt, inv_dt, shear_log, lambda_al)
+                                            : 0.0;
     // Dry: the film terms are 0 (six_pi_mu = 0).
     const lub::NormalForce fn =
         EVENTS ? lub::contact_event_force<WET, GRID>(normal, gap, g.film, g.m_e, g.u_n, resolved, shear_log)
+        : WET  ? lub::sustained_contact_force(normal, gap, g.film, g.m_e, g.u_n, lambda_al, sustained)
                : lub::sustained_contact_force<GRID>(normal, gap, g.film, g.m_e, g.u_n, sustained);
     const bool apart = !EVENTS & !lub::contact_possible(gap, g.u_n, dt);
-    const double film_apart = WET & !EVENTS ? lub::film_force_apart<GRID>(normal.lubrication, gap, g.film, g.m_e, g.u_n,
-                                                                          dt, inv_dt, shear_log)
-                                            : 0.0;
     // The spring acts: in sustained contact and touched (EVENTS: in overlap).
     const bool stick = EVENTS ? gap < 0.0 : sustained & (touched[c] != 0.0);
     // Whether the lane is done here, as doubles (a pair of immovable atoms, m_e = 0, is not: the

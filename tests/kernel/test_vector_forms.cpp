@@ -452,3 +452,37 @@ TEST(ShearFilmApart, TheNormalFilmsLogarithmIsTheShearFilms)
   EXPECT_GT(inside, 15000);
   EXPECT_GT(saturated, 5000);
 }
+
+// The film apart's lambda(eps_al), which the vectorised contact loops hand to the sustained
+// contact's saturated film instead of a logarithm of their own, is the activation's (std::log) to
+// rounding: a few ulps of each term of lambda = c_inv / eps + c_log l + c_elog eps l + c_0.
+TEST(FilmApart, ItsLambdaOfActivationIsTheActivations)
+{
+  Draw d(31);
+  for (int trial = 0; trial < 300; ++trial) {
+    Coefficients c;
+    c.e_dry = 0.9;
+    const bool grid = trial % 2 == 0;
+    draw_film(d, grid, c);
+    ASSERT_EQ(validate(c), "");
+    const double dt = d.log_uniform(1e-8, 1e-3);
+    const NormalModel m = make_normal_model(c, Partner::particle, dt);
+    const Expansion &e = m.lubrication.expansion;
+    for (int state = 0; state < 30; ++state) {
+      const auto [radius, mass] = draw_pair(d);
+      const Lubrication::Activation al = m.lubrication.activation(radius);
+      const double gap = d.uniform(-0.01, 1.5) * al.eps * radius.value;
+      const double u_n = radius.value / dt * d.uniform(-0.5, 0.5) * al.eps;
+      double shear_log, lambda_al = NAN;
+      if (grid)
+        film_force_apart<true>(m.lubrication, gap, radius, mass, u_n, dt, 1.0 / dt, shear_log, lambda_al);
+      else
+        film_force_apart<false>(m.lubrication, gap, radius, mass, u_n, dt, 1.0 / dt, shear_log, lambda_al);
+      const double l = std::log(al.eps);
+      const double terms =
+          std::fabs(e.c_inv / al.eps) + std::fabs(e.c_log * l) + std::fabs(e.c_elog * al.eps * l) + std::fabs(e.c_0);
+      ASSERT_NEAR(lambda_al, al.lambda, 8.0 * std::numeric_limits<double>::epsilon() * terms)
+          << "eps_al " << al.eps << (grid ? " grid" : " fixed");
+    }
+  }
+}

@@ -394,3 +394,28 @@ def test_run_0_between_runs_of_a_frictional_bed_changes_nothing(lmp, nprocs):
     assert zeros == plain
     single = lmp(frictional_scene(steps=1200) + dump_state(4), nprocs=nprocs)
     assert_same(single, plain, rel=1e-12)
+
+
+def test_wall_elongation_is_forgotten_away_from_the_wall(lmp):
+    """A sphere stopped mid-contact (elongation stored, touched) is moved far from the wall for a
+    few steps, then put back into a small overlap at rest, without spin. Out of reach the wall
+    forgets the elongation (the plane walls' pre-test keeps the atoms that hold one), so the
+    sphere is pushed off along the normal alone: no tangential velocity or spin (with the stale
+    elongation, a tangential spring force of the first contact's order acts)."""
+    script = wall_impact(0.5, 1e6, 1.0)
+    run = next(line for line in script.splitlines() if line.startswith("run "))
+    again = f"""run 25
+set atom 1 z {5 * R}
+velocity all set 0 0 0
+set atom 1 omega 0 0 0
+run 5
+set atom 1 z {R * (1 - 1e-3)}
+run 10
+print "RESULT vx_again $(vx[1]/{U}:%.15g)"
+print "RESULT spin_again $({R}*c_wy/{U}:%.15g)"
+print "RESULT vz_again $(vz[1]/{U}:%.15g)"
+"""
+    res = lmp(script.replace(run, again))
+    assert res["vz_again"] > 1e-3    # the overlap did push the sphere off
+    assert abs(res["vx_again"]) < 1e-12
+    assert abs(res["spin_again"]) < 1e-12
