@@ -150,6 +150,28 @@ inline double shear_film_share(double force_sq, double slip_sq, double tangentia
   return std::sqrt(force_sq / std::max(slip_sq, DBL_MIN)) * kick_time / tangential_mass;
 }
 
+// A bound on film_share_bound and shear_film_share_bound of every pair of spheres with radii in
+// [r_min, r_max] and masses of at least m_min, for one film (no logarithm per pair: one check of
+// a whole bed costs a comparison per pair). The film radius 2 r_i r_j / (r_i + r_j) and the
+// reduced radius times 2 lie in [r_min, r_max], and 1 / m_e = 1 / m_i + 1 / m_j <= 2 / m_min. eps_al
+// does not grow with R, and lambda(eps) = c_inv / eps + c_log ln eps + c_elog eps ln eps + c_0
+// decreases for every eps > 0 (c_inv > 0 and c_log, c_elog <= 0: -eps^2 (ln eps + 1) <= 0.025 where
+// c_elog's term grows, and c_inv > 0.025 |c_elog|), so lambda(eps_1) - lambda(eps_al) and
+// ln(eps_al / eps_1) are largest at R = r_min.
+inline double pair_film_share_ceiling(const TangentialModel &shear, const Lubrication &film, double r_min, double r_max,
+                                      double m_min, double dt)
+{
+  if (!film.active()) return 0.0;
+  const FilmRadius smallest(r_min);
+  const double lambda_al = film.grid_spacing > 0.0 ? film.activation(smallest).lambda : film.lambda_activation;
+  const double slope = std::max(0.0, film.lambda_saturated - lambda_al);
+  const double normal = std::min(1.0, film.six_pi_mu * r_max * slope * dt * 2.0 / m_min);
+  if (!shear.film_active()) return normal;
+  const double log_range = std::max(0.0, std::log(film.activation_for(smallest) / film.eps_saturation));
+  const double rate = shear.two_pi_mu * (0.5 * r_max) * log_range * dt / (tangential_mass_ratio * 0.5 * m_min);
+  return std::max(normal, -std::expm1(-rate));
+}
+
 // One contact's share of its atoms' loads: the larger of its normal and shear films' shares
 // (orthogonal directions of the contact's relative motion; see above).
 inline double contact_film_share(double normal_share, double shear_share)

@@ -42,6 +42,8 @@ static constexpr const char *STYLE = "Pair style lubricated/springdashpot";
 // those contacts' share bounds (and its wet walls') bounds its load: where no sum exceeds 1
 // the budget would scale nothing and is skipped until the next build (or a new time step).
 // The bounds use the spheres' own masses, which no contact mass exceeds (contact_mass.h).
+// First with one ceiling for every pair's share (film_budget.h, pair_film_share_ceiling): where no
+// atom's sum of those reaches 1, neither do the pairs' own bounds, whose logarithms are then spared.
 bool PairLubricatedSpringDashpot::films_can_exceed_budget()
 {
   double **x = atom->x;
@@ -55,6 +57,51 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
     scale_of_atom.resize(atom->nmax);
   }
   double *bound = load_of_atom.data();
+  // The sums of the bounds (per atom in `bound`), the walls' added, over all ranks: whether any
+  // can exceed the budget.
+  auto any_over = [&]() {
+    for (auto wall : walls)
+      wall->add_film_share_bounds(bound, nlocal);
+    if (newton_pair) {
+      comm_what = COMM_LOAD;
+      comm->reverse_comm(this);
+    }
+    const int over = lub::any_load_can_exceed_budget(bound, nlocal) ? 1 : 0;
+    int any = 0;
+    MPI_Allreduce(&over, &any, 1, MPI_INT, MPI_MAX, world);
+    return any != 0;
+  };
+
+  double r_min = INFINITY, r_max = 0.0, m_min = INFINITY;
+  for (int k = 0; k < nall; k++) {
+    r_min = std::min(r_min, radius[k]), r_max = std::max(r_max, radius[k]);
+    m_min = std::min(m_min, rmass[k]);
+  }
+  const int stride = ntypes_alloc + 1;
+  double ceiling = 0.0;
+  for (int a = 1; a < stride; a++)
+    for (int b = 1; b < stride; b++) {
+      const lub::ContactModel &model = models[index(a, b)];
+      ceiling = std::max(
+          ceiling, lub::pair_film_share_ceiling(model.tangential, model.normal.lubrication, r_min, r_max, m_min, dt));
+    }
+  const double *reach_table = max_reach.data();    // the types' largest film reach
+  std::fill(bound, bound + nall, 0.0);
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    const double *reach_row = reach_table + type[i] * stride;
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+      const double reach = radius[i] + radius[j] + reach_row[type[j]] + skin;
+      const double b = delx * delx + dely * dely + delz * delz < reach * reach ? ceiling : 0.0;
+      bound[i] += b;
+      if (newton_pair || j < nlocal) bound[j] += b;
+    }
+  }
+  if (!any_over()) return false;
+
   std::fill(bound, bound + nall, 0.0);
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
@@ -78,16 +125,7 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
       if (newton_pair || j < nlocal) bound[j] += b;
     }
   }
-  for (auto wall : walls)
-    wall->add_film_share_bounds(bound, nlocal);
-  if (newton_pair) {
-    comm_what = COMM_LOAD;
-    comm->reverse_comm(this);
-  }
-  const int over = lub::any_load_can_exceed_budget(bound, nlocal) ? 1 : 0;
-  int any_over = 0;
-  MPI_Allreduce(&over, &any_over, 1, MPI_INT, MPI_MAX, world);
-  return any_over != 0;
+  return any_over();
 }
 
 // Owned atoms' inverse contact masses, then the ghosts' (a rigid body's mass is known to the

@@ -504,6 +504,53 @@ TEST(FilmBudget, ShearFilmShareBoundHoldsForEveryGapAndSlip)
   EXPECT_EQ(shear_film_share_bound(m.tangential, m.normal.lubrication, film_radius, reduced_radius, 1e-6, dt), 0.0);
 }
 
+// pair_film_share_ceiling: no pair of spheres with radii in [r_min, r_max] and masses of at least
+// m_min has a normal or shear film bound above it (the pair style's first, log-free check of a
+// bed), for fixed and grid activations (a grid's eps_al from 0.75 dx / R beyond 1 to below eps_1),
+// with and without the shear film; and it is attained where the spread of radii and masses
+// vanishes (the smallest pair), so it is no looser than it must be.
+TEST(FilmBudget, PairShareCeilingBoundsEveryPairsBounds)
+{
+  std::mt19937_64 rng(20261127);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double dt = 1e-5;
+  int below_one = 0;
+  for (int trial = 0; trial < 400; trial++) {
+    Coefficients c;
+    c.e_dry = 0.9;
+    c.viscosity = std::pow(10.0, -4.0 + 4.0 * unit(rng));
+    c.friction = trial % 3 == 0 ? 0.0 : 0.3;    // with and without the shear film
+    const double r_min = 1e-3 * std::pow(10.0, -1.0 + 1.5 * unit(rng)), r_max = r_min * (1.0 + 3.0 * unit(rng));
+    if (trial % 2 == 0)
+      c.grid_spacing = r_min * std::pow(10.0, -3.5 + 4.0 * unit(rng));
+    else
+      c.eps_activation = 0.01 + 0.2 * unit(rng);
+    const ContactModel m = make_contact_model(c, Partner::particle, dt);
+    const Lubrication &film = m.normal.lubrication;
+    const double density = 2500.0, m_min = density * 4.18879 * r_min * r_min * r_min;
+    const double ceiling = pair_film_share_ceiling(m.tangential, film, r_min, r_max, m_min, dt);
+    below_one += ceiling < 1.0;
+    auto bound_of = [&](double ri, double rj, double mi, double mj) {
+      const FilmRadius radius = film_radius_pair(ri, rj);
+      const double m_e = reduced_mass(mi, mj), reduced_radius = ri * rj / (ri + rj);
+      return std::max(
+          film_share_bound(film, radius.value, m_e, dt),
+          shear_film_share_bound(m.tangential, film, radius.value, reduced_radius, tangential_mass_ratio * m_e, dt));
+    };
+    for (int k = 0; k < 200; k++) {
+      const double ri = r_min + (r_max - r_min) * unit(rng), rj = r_min + (r_max - r_min) * unit(rng);
+      // Masses of at least m_min: a denser sphere is heavier.
+      const double mi = std::max(m_min, density * (1.0 + unit(rng)) * 4.18879 * ri * ri * ri);
+      const double mj = std::max(m_min, density * 4.18879 * rj * rj * rj);
+      ASSERT_LE(bound_of(ri, rj, mi, mj), ceiling * (1.0 + 1e-12)) << "trial " << trial;
+    }
+    EXPECT_NEAR(pair_film_share_ceiling(m.tangential, film, r_min, r_min, m_min, dt),
+                bound_of(r_min, r_min, m_min, m_min), 1e-12)
+        << "trial " << trial;
+  }
+  EXPECT_GT(below_one, 100);
+}
+
 TEST(FilmBudget, DenseScenesWithShearFilmsNeverGainEnergyWithRotation)
 {
   std::mt19937_64 rng(20260917);
