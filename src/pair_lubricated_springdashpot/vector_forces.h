@@ -130,9 +130,9 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
   auto film_shear_pairs = [&](const lubricated::ContactModel &model, const int *pair_i, const int *pair_j,
                               const int * /*pair_jj*/, int n) {
     if (atoms.inverse_mass)
-      vector_pairs::film_shear_only_by_inverse(atoms, model, pair_i, pair_j, n, film, capacity, shear_out);
+      vector_pairs::film_shear_only_by_inverse(atoms, model, pair_i, pair_j, n, film, capacity, shear_out, budget);
     else
-      vector_pairs::film_shear_only(atoms, model, pair_i, pair_j, n, film, capacity, shear_out);
+      vector_pairs::film_shear_only(atoms, model, pair_i, pair_j, n, film, capacity, shear_out, budget);
     for (int c = 0; c < n; c++)
       apply_tangential(pair_i[c], pair_j[c], force[0][c], force[1][c], force[2][c], shear[3][c], shear[4][c],
                        shear[5][c], 0.0, evflag);

@@ -152,7 +152,9 @@ contact_event_loop(const Atoms &atoms, const lub::NormalModel &model, const int 
   }
 }
 
-template <bool GRID, bool INVERSE> __attribute__((always_inline)) static inline void
+// RECORDS: whether the film budget's inputs are written (film, capacity, shear, slip_sq and
+// tangential_mass); the force and torque always.
+template <bool GRID, bool INVERSE, bool RECORDS> __attribute__((always_inline)) static inline void
 film_shear_only_loop(const Atoms &atoms, const lub::ContactModel &model, const int *__restrict pair_i,
                      const int *__restrict pair_j, int n, double *__restrict film_force, double *__restrict capacity,
                      double *__restrict force_x, double *__restrict force_y, double *__restrict force_z,
@@ -176,8 +178,7 @@ film_shear_only_loop(const Atoms &atoms, const lub::ContactModel &model, const i
     double shear_log;    // the shear film's logarithm, from the normal film's
     const double film = lub::film_force_apart<GRID>(film_law, gap, g.film, g.m_e, g.u_n, dt, inv_dt, shear_log);
     const double normal = g.rinv * film;
-    film_force[c] = film;
-    capacity[c] = lub::film_capacity(g.m_e, g.u_n);
+    if (RECORDS) film_force[c] = film, capacity[c] = lub::film_capacity(g.m_e, g.u_n);
     // The slip of the surfaces (lubricated/tangential.h) and the shear film on it, in plain
     // doubles (a helper left out of line in this large loop body would stop the vectoriser).
     const double radi = local.radius[i], radj = local.radius[j];
@@ -197,12 +198,11 @@ film_shear_only_loop(const Atoms &atoms, const lub::ContactModel &model, const i
     const double damping = lub::shear_film_damping_of_log(shear_law, gap * g.film.inverse, eps_al, film_law.eps_release,
                                                           shear_log, radi * radj / g.radsum, m_t);
     const double fx = -damping * sx, fy = -damping * sy, fz = -damping * sz;
-    shear_x[c] = fx, shear_y[c] = fy, shear_z[c] = fz;
+    if (RECORDS) shear_x[c] = fx, shear_y[c] = fy, shear_z[c] = fz;
     force_x[c] = g.delx * normal + fx, force_y[c] = g.dely * normal + fy, force_z[c] = g.delz * normal + fz;
     // -n x F: the torque on i per unit of R_i (on j per unit of R_j).
     torque_x[c] = -(ny * fz - nz * fy), torque_y[c] = -(nz * fx - nx * fz), torque_z[c] = -(nx * fy - ny * fx);
-    slip_sq[c] = sx * sx + sy * sy + sz * sz;
-    tangential_mass[c] = m_t;
+    if (RECORDS) slip_sq[c] = sx * sx + sy * sy + sz * sz, tangential_mass[c] = m_t;
   }
 }
 
@@ -429,25 +429,40 @@ void contact_events_by_inverse(const Atoms &atoms, const lub::NormalModel &model
   o.force_x, o.force_y, o.force_z, o.shear_x, o.shear_y, o.shear_z, o.torque_x, o.torque_y, o.torque_z, o.slip_sq,     \
       o.tangential_mass
 
+// film_shear_only_loop<GRID, INVERSE, RECORDS> for the model's film and the caller's records.
+#define SHEAR_LOOP(INVERSE)                                                                                            \
+  do {                                                                                                                 \
+    const bool grid = model.normal.lubrication.grid_spacing > 0.0;                                                     \
+    if (grid && records)                                                                                               \
+      film_shear_only_loop<true, INVERSE, true>(atoms, model, pair_i, pair_j, n, film, capacity,                       \
+                                                SHEAR_OUTPUTS(shear));                                                 \
+    else if (grid)                                                                                                     \
+      film_shear_only_loop<true, INVERSE, false>(atoms, model, pair_i, pair_j, n, film, capacity,                      \
+                                                 SHEAR_OUTPUTS(shear));                                                \
+    else if (records)                                                                                                  \
+      film_shear_only_loop<false, INVERSE, true>(atoms, model, pair_i, pair_j, n, film, capacity,                      \
+                                                 SHEAR_OUTPUTS(shear));                                                \
+    else                                                                                                               \
+      film_shear_only_loop<false, INVERSE, false>(atoms, model, pair_i, pair_j, n, film, capacity,                     \
+                                                  SHEAR_OUTPUTS(shear));                                               \
+  } while (false)
+
 VECTOR_PAIRS_CLONES
 void film_shear_only(const Atoms &atoms, const lub::ContactModel &model, const int *pair_i, const int *pair_j, int n,
-                     double *film, double *capacity, const ShearOut &shear)
+                     double *film, double *capacity, const ShearOut &shear, bool records)
 {
-  if (model.normal.lubrication.grid_spacing > 0.0)
-    film_shear_only_loop<true, false>(atoms, model, pair_i, pair_j, n, film, capacity, SHEAR_OUTPUTS(shear));
-  else
-    film_shear_only_loop<false, false>(atoms, model, pair_i, pair_j, n, film, capacity, SHEAR_OUTPUTS(shear));
+  SHEAR_LOOP(false);
 }
 
 VECTOR_PAIRS_CLONES
 void film_shear_only_by_inverse(const Atoms &atoms, const lub::ContactModel &model, const int *pair_i,
-                                const int *pair_j, int n, double *film, double *capacity, const ShearOut &shear)
+                                const int *pair_j, int n, double *film, double *capacity, const ShearOut &shear,
+                                bool records)
 {
-  if (model.normal.lubrication.grid_spacing > 0.0)
-    film_shear_only_loop<true, true>(atoms, model, pair_i, pair_j, n, film, capacity, SHEAR_OUTPUTS(shear));
-  else
-    film_shear_only_loop<false, true>(atoms, model, pair_i, pair_j, n, film, capacity, SHEAR_OUTPUTS(shear));
+  SHEAR_LOOP(true);
 }
+
+#undef SHEAR_LOOP
 
 #define CONTACT_ARGUMENTS(o)                                                                                           \
   o.fpair, o.film, o.capacity, o.energy, o.force_x, o.force_y, o.force_z, o.torque_x, o.torque_y, o.torque_z,          \

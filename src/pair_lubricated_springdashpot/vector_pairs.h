@@ -73,15 +73,17 @@ void contact_or_film_by_inverse(const Atoms &atoms, const lubricated::NormalMode
 // the film along n and the shear film; on j the opposite), the shear film's force on i alone
 // (shear_x/y/z, 0 without a shear film), the torque it makes per unit radius (torque_x/y/z: on
 // i times R_i, on j times R_j), the slip's squared length and the tangential mass, from which
-// the caller takes the shear film's budget share.
+// the caller takes the shear film's budget share. records: whether film, capacity, shear_x/y/z,
+// slip_sq and tangential_mass (the budget's inputs) are written; the force and torque always.
 struct ShearOut {
   double *force_x, *force_y, *force_z, *shear_x, *shear_y, *shear_z, *torque_x, *torque_y, *torque_z, *slip_sq,
       *tangential_mass;
 };
 void film_shear_only(const Atoms &atoms, const lubricated::ContactModel &model, const int *pair_i, const int *pair_j,
-                     int n, double *film, double *capacity, const ShearOut &shear);
+                     int n, double *film, double *capacity, const ShearOut &shear, bool records = true);
 void film_shear_only_by_inverse(const Atoms &atoms, const lubricated::ContactModel &model, const int *pair_i,
-                                const int *pair_j, int n, double *film, double *capacity, const ShearOut &shear);
+                                const int *pair_j, int n, double *film, double *capacity, const ShearOut &shear,
+                                bool records = true);
 
 // Kept pairs with friction (no rolling resistance) and maybe a film and a shear film: done[c] =
 // 1.0 where pair c is in overlap now, a step ago and a step ahead (as contact_or_film decides)

@@ -6,7 +6,7 @@ if-converts runs at half the speed, as a budget output once did unnoticed).
 Compiles SOURCE (vector_pairs.cpp) with the plugin's flags and -fopt-info-vec, and requires
 the loop of film_only_loop (4 instantiations: grid or not, masses or inverse masses), of
 contact_or_film_loop, contact_exit_loop and contact_event_loop (6 each: dry, wet, wet with grid; masses or inverse masses), of
-film_shear_only_loop (4, as film_only_loop) and of friction_contact_loop (10: dry; wet with or
+film_shear_only_loop (8: as film_only_loop, with and without the budget's records) and of friction_contact_loop (10: dry; wet with or
 without a grid and a shear film; masses or inverse masses) to be vectorised in every instantiation: with 64-byte vectors (the
 x86-64-v4 clone) and twice with 32-byte vectors (the x86-64-v3 clone, and the v4 clone's
 epilogue). Exit 77 (skipped) where the clones do not exist: not GCC >= 12 on x86-64.
@@ -18,7 +18,7 @@ import sys
 
 SKIP = 77
 LOOPS = {"film_only_loop": 4, "contact_or_film_loop": 6, "contact_exit_loop": 6, "contact_event_loop": 6,
-         "film_shear_only_loop": 4,
+         "film_shear_only_loop": 8,
          "friction_contact_loop": 20}
 
 

@@ -222,3 +222,104 @@ TEST(VectorFriction, EqualsTheWholeContactWhereItApplies)
   EXPECT_GT(done, 5000);
   EXPECT_GT(left, 1000);
 }
+
+// film_shear_only (vector_pairs.h): for pairs apart over the step, the whole contact of
+// lubricated::contact_forces<true> (normal film along n, shear film at the contact points, no
+// friction apart): force on i, torques per unit radius, the shear film alone, the budget's inputs
+// (film, capacity m_e |u_n|, slip squared, tangential mass); without records the same force and
+// torque to the bit, the budget's inputs left unwritten.
+TEST(VectorFriction, FilmShearOnlyIsTheWholeContactApart)
+{
+  const double dt = 1.25e-5;
+  int checked = 0, sheared = 0;    // pairs, and those with a shear film
+  unsigned seed = 100;
+  for (const char *film : {"activation", "grid"})
+    for (bool inverse_masses : {false, true})
+      for (double viscosity : {1e-3, 0.3}) {
+        Coefficients c;
+        c.e_dry = 0.9;
+        c.friction = 0.3;
+        c.viscosity = viscosity;
+        if (std::string(film) == "grid")
+          c.grid_spacing = 1.25e-4;
+        else
+          c.eps_activation = 0.1;
+        const ContactModel model = make_contact_model(c, Partner::particle, dt);
+        std::mt19937_64 rng(seed++);
+        const Scene s = draw_scene(rng, 256, dt);
+        // The pairs apart over the step whose atoms move (what the pair style gives this loop).
+        std::vector<int> pair_i, pair_j;
+        for (std::size_t k = 0; k < s.pair_i.size(); k++) {
+          const int i = s.pair_i[k], j = s.pair_j[k];
+          double del[3], dv[3];
+          for (int d = 0; d < 3; d++)
+            del[d] = s.x[3 * i + d] - s.x[3 * j + d], dv[d] = s.v[3 * i + d] - s.v[3 * j + d];
+          const double r = std::sqrt(del[0] * del[0] + del[1] * del[1] + del[2] * del[2]);
+          const double u_n = (dv[0] * del[0] + dv[1] * del[1] + dv[2] * del[2]) / r;
+          const double m_e = inverse_masses ? reduced_mass_of_inverses(s.inverse[i], s.inverse[j])
+                                            : reduced_mass(s.rmass[i], s.rmass[j]);
+          if (!contact_possible(r - s.radius[i] - s.radius[j], u_n, dt) && m_e > 0.0)
+            pair_i.push_back(i), pair_j.push_back(j);
+        }
+        const int n = static_cast<int>(pair_i.size());
+        ASSERT_GT(n, 100);
+        const vp::Atoms atoms{
+            s.x.data(),    s.v.data(), s.radius.data(), s.rmass.data(), inverse_masses ? s.inverse.data() : nullptr,
+            s.omega.data()};
+        std::vector<double> out(13 * n, -7.0), bare(13 * n, -7.0);
+        auto columns = [n](std::vector<double> &o) {
+          auto col = [&o, n](int k) { return o.data() + k * n; };
+          return vp::ShearOut{col(2), col(3), col(4),  col(5),  col(6), col(7),
+                              col(8), col(9), col(10), col(11), col(12)};
+        };
+        auto film_shear_only = inverse_masses ? vp::film_shear_only_by_inverse : vp::film_shear_only;
+        film_shear_only(atoms, model, pair_i.data(), pair_j.data(), n, out.data(), out.data() + n, columns(out), true);
+        film_shear_only(atoms, model, pair_i.data(), pair_j.data(), n, bare.data(), bare.data() + n, columns(bare),
+                        false);
+        auto at = [n](const std::vector<double> &o, int column, int k) { return o[column * n + k]; };
+        for (int k = 0; k < n; k++) {
+          const int i = pair_i[k], j = pair_j[k];
+          ContactPoint p;
+          const Vec3 del{s.x[3 * i] - s.x[3 * j], s.x[3 * i + 1] - s.x[3 * j + 1], s.x[3 * i + 2] - s.x[3 * j + 2]};
+          const double r = std::sqrt(dot(del, del));
+          p.n = {del.x / r, del.y / r, del.z / r};
+          p.film = film_radius_pair(s.radius[i], s.radius[j]);
+          p.gap = r - s.radius[i] - s.radius[j];
+          p.dv = {s.v[3 * i] - s.v[3 * j], s.v[3 * i + 1] - s.v[3 * j + 1], s.v[3 * i + 2] - s.v[3 * j + 2]};
+          p.u_n = dot(p.dv, p.n);
+          p.reduced_mass = inverse_masses ? reduced_mass_of_inverses(s.inverse[i], s.inverse[j])
+                                          : reduced_mass(s.rmass[i], s.rmass[j]);
+          p.omega_i = {s.omega[3 * i], s.omega[3 * i + 1], s.omega[3 * i + 2]};
+          p.omega_j = {s.omega[3 * j], s.omega[3 * j + 1], s.omega[3 * j + 2]};
+          p.radius_i = s.radius[i], p.radius_j = s.radius[j];
+          p.reduced_radius = s.radius[i] * s.radius[j] / (s.radius[i] + s.radius[j]);
+          HistorySlot none;    // apart: no elongation acts
+          const ContactForces f = contact_forces<true>(model, p, none, Evaluation::step);
+          const Vec3 whole{f.normal.total() * p.n.x + f.tangential.x, f.normal.total() * p.n.y + f.tangential.y,
+                           f.normal.total() * p.n.z + f.tangential.z};
+          const double scale =
+              std::max({std::fabs(f.normal.total()), std::sqrt(dot(f.tangential, f.tangential)), 1e-300});
+          // The film apart's rounding is relative to the film integral (test_vector_forms.cpp).
+          expect_close(at(out, 0, k), f.normal.lubrication, 1e2 * scale, "film", k);
+          expect_close(at(out, 1, k), p.reduced_mass * std::fabs(p.u_n), p.reduced_mass * std::fabs(p.u_n), "capacity",
+                       k);
+          expect_close(at(out, 2, k), whole.x, 1e2 * scale, "force x", k);
+          expect_close(at(out, 3, k), whole.y, 1e2 * scale, "force y", k);
+          expect_close(at(out, 4, k), whole.z, 1e2 * scale, "force z", k);
+          expect_close(at(out, 5, k), f.shear.x, scale, "shear film x", k);
+          expect_close(at(out, 7, k), f.shear.z, scale, "shear film z", k);
+          expect_close(at(out, 8, k) * s.radius[i], f.torque_i.x, scale * s.radius[i], "torque i x", k);
+          expect_close(at(out, 10, k) * s.radius[j], f.torque_j.z, scale * s.radius[j], "torque j z", k);
+          expect_close(at(out, 11, k), dot(f.slip, f.slip), dot(f.slip, f.slip), "slip squared", k);
+          expect_close(at(out, 12, k), tangential_mass_ratio * p.reduced_mass, p.reduced_mass, "tangential mass", k);
+          for (int column : {2, 3, 4, 8, 9, 10})
+            ASSERT_EQ(at(bare, column, k), at(out, column, k)) << "column " << column << " pair " << k;
+          for (int column : {0, 1, 5, 6, 7, 11, 12})
+            ASSERT_EQ(at(bare, column, k), -7.0) << "column " << column << " pair " << k;
+          checked++;
+          sheared += dot(f.shear, f.shear) > 0.0;
+        }
+      }
+  EXPECT_GT(checked, 800);
+  EXPECT_GT(sheared, 300);
+}
