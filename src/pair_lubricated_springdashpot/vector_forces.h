@@ -45,7 +45,7 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
                                   inverse_mass_on ? inverse_mass.data() : nullptr,
                                   TANGENTIAL ? omega[0] : nullptr};
   constexpr int chunk = 256;
-  double fpair[chunk], energy[chunk], film[chunk], capacity[chunk];
+  double energy[chunk], film[chunk], capacity[chunk];
   double done[chunk];
   int rest[chunk], leaving[chunk];    // places in the chunk: pairs a loop left, pairs leaving the overlap
   const bool budget = film_budget_now;
@@ -141,10 +141,10 @@ PairLubricatedSpringDashpot::vector_forces(int ncandidate, int nfilm, double **v
   // Sustained frictional contacts (TANGENTIAL): the elongations gathered, the whole contact
   // vectorised, forces, torques and elongations scattered; the rest through the general loop.
   double touched[chunk], delta[3][chunk], next[3][chunk], next_touched[chunk], torque_unit[3][chunk], on[chunk];
-  const vector_pairs::FrictionOut friction_out{fpair,    film,     capacity,       energy,         force[0],
-                                               force[1], force[2], torque_unit[0], torque_unit[1], torque_unit[2],
-                                               shear[0], shear[1], shear[2],       slip_sq,        tangential_mass,
-                                               next[0],  next[1],  next[2],        next_touched,   on};
+  const vector_pairs::FrictionOut friction_out{
+      film,           capacity,       energy,   force[0],     force[1], force[2], torque_unit[0],
+      torque_unit[1], torque_unit[2], shear[0], shear[1],     shear[2], slip_sq,  tangential_mass,
+      next[0],        next[1],        next[2],  next_touched, on};
   // Pairs a chunk leaves to a loop over few of them (contacts that start or end, exits),
   // gathered over chunks so that those loops run on whole vectors, not a few lanes and their
   // scalar remainder: run when full, before pairs of another model join, and at the end.

@@ -223,13 +223,13 @@ template <bool WET, bool GRID, bool SHEAR, bool INVERSE, bool EVENTS> __attribut
 friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const int *__restrict pair_i,
                       const int *__restrict pair_j, const double *__restrict touched, const double *__restrict delta_x,
                       const double *__restrict delta_y, const double *__restrict delta_z, int n,
-                      double *__restrict fpair, double *__restrict film_force, double *__restrict capacity,
-                      double *__restrict energy, double *__restrict force_x, double *__restrict force_y,
-                      double *__restrict force_z, double *__restrict torque_x, double *__restrict torque_y,
-                      double *__restrict torque_z, double *__restrict shear_x, double *__restrict shear_y,
-                      double *__restrict shear_z, double *__restrict slip_sq, double *__restrict tangential_mass,
-                      double *__restrict new_x, double *__restrict new_y, double *__restrict new_z,
-                      double *__restrict new_touched, double *__restrict done)
+                      double *__restrict film_force, double *__restrict capacity, double *__restrict energy,
+                      double *__restrict force_x, double *__restrict force_y, double *__restrict force_z,
+                      double *__restrict torque_x, double *__restrict torque_y, double *__restrict torque_z,
+                      double *__restrict shear_x, double *__restrict shear_y, double *__restrict shear_z,
+                      double *__restrict slip_sq, double *__restrict tangential_mass, double *__restrict new_x,
+                      double *__restrict new_y, double *__restrict new_z, double *__restrict new_touched,
+                      double *__restrict done)
 {
   const Atoms local = atoms;
   const lub::NormalModel normal = model.normal;
@@ -319,7 +319,6 @@ friction_contact_loop(const Atoms &atoms, const lub::ContactModel &model, const 
     const double normal_total = stick | EVENTS ? fn.total() : film_apart;
     const double film_total = stick | EVENTS ? fn.lubrication : film_apart;
     const double normal = EVENTS ? (ok ? normal_total * g.rinv : 0.0) : on * normal_total * g.rinv;
-    fpair[c] = normal;
     film_force[c] = EVENTS ? (ok ? film_total : 0.0) : on * film_total;
     capacity[c] = lub::film_capacity(g.m_e, g.u_n);
     energy[c] = EVENTS ? (spring ? fn.energy : 0.0) : in_contact * fn.energy;
@@ -465,8 +464,8 @@ void film_shear_only_by_inverse(const Atoms &atoms, const lub::ContactModel &mod
 #undef SHEAR_LOOP
 
 #define CONTACT_ARGUMENTS(o)                                                                                           \
-  o.fpair, o.film, o.capacity, o.energy, o.force_x, o.force_y, o.force_z, o.torque_x, o.torque_y, o.torque_z,          \
-      o.shear_x, o.shear_y, o.shear_z, o.slip_sq, o.tangential_mass, o.new_x, o.new_y, o.new_z, o.new_touched, o.done
+  o.film, o.capacity, o.energy, o.force_x, o.force_y, o.force_z, o.torque_x, o.torque_y, o.torque_z, o.shear_x,        \
+      o.shear_y, o.shear_z, o.slip_sq, o.tangential_mass, o.new_x, o.new_y, o.new_z, o.new_touched, o.done
 
 // One entry point per mass form; the model picks the loop (dry; wet with or without a grid and a
 // shear film).

@@ -88,9 +88,8 @@ void film_shear_only_by_inverse(const Atoms &atoms, const lubricated::ContactMod
 // Kept pairs with friction (no rolling resistance) and maybe a film and a shear film: done[c] =
 // 1.0 where pair c is in overlap now, a step ago and a step ahead (as contact_or_film decides)
 // and touched at the last step (touched[c] != 0), or apart over the step (the films alone), with
-// the whole contact of lubricated::contact_forces<true> for it: fpair, film, capacity, energy as
-// above; force_x/y/z the whole force on i (fpair (x_i - x_j), friction and shear film; on j the
-// opposite),
+// the whole contact of lubricated::contact_forces<true> for it: film, capacity, energy as above;
+// force_x/y/z the whole force on i (normal along n, friction and shear film; on j the opposite),
 // torque_x/y/z the torque per unit radius (on i times R_i, on j times R_j), shear_x/y/z the shear
 // film alone, slip_sq and tangential_mass for its budget share, new_x/y/z and new_touched the
 // elongation and touched flag after the step (delta_x/y/z and touched before it). done[c] = 0.0:
@@ -100,7 +99,7 @@ struct FrictionIn {
   const double *touched, *delta_x, *delta_y, *delta_z;
 };
 struct FrictionOut {
-  double *fpair, *film, *capacity, *energy, *force_x, *force_y, *force_z, *torque_x, *torque_y, *torque_z;
+  double *film, *capacity, *energy, *force_x, *force_y, *force_z, *torque_x, *torque_y, *torque_z;
   double *shear_x, *shear_y, *shear_z, *slip_sq, *tangential_mass, *new_x, *new_y, *new_z, *new_touched;
   double *done;    // 1 or 0 (an int output stops GCC 12 vectorising the loop with inverse masses)
 };

@@ -97,8 +97,9 @@ void check_model(const Coefficients &c, bool inverse_masses, bool events, unsign
       s.omega.data()};
   std::vector<double> out(20 * pairs);
   auto col = [&](int k) { return out.data() + k * pairs; };
-  const vp::FrictionOut o{col(0),  col(1),  col(2),  col(3),  col(4),  col(5),  col(6),  col(7),  col(8),  col(9),
-                          col(10), col(11), col(12), col(13), col(14), col(15), col(16), col(17), col(18), col(19)};
+  // Column 0 unused (the normal force is the whole force along n).
+  const vp::FrictionOut o{col(1),  col(2),  col(3),  col(4),  col(5),  col(6),  col(7),  col(8),  col(9), col(10),
+                          col(11), col(12), col(13), col(14), col(15), col(16), col(17), col(18), col(19)};
   const vp::FrictionIn in{s.pair_i.data(),  s.pair_j.data(),  s.touched.data(),
                           s.delta_x.data(), s.delta_y.data(), s.delta_z.data()};
   if (events)
@@ -166,7 +167,9 @@ void check_model(const Coefficients &c, bool inverse_masses, bool events, unsign
          std::sqrt(s.delta_x[k] * s.delta_x[k] + s.delta_y[k] * s.delta_y[k] + s.delta_z[k] * s.delta_z[k]), 1e-300});
     // The film apart is a difference of the film integral at two gaps: its rounding is relative to
     // the integral's size (test_vector_forms.cpp), here up to 1e-10 of the force.
-    expect_close(col(0)[k] * r, f.normal.total(), 1e2 * force_scale, "normal force", k,
+    // The normal force: the whole force along n (friction and shear film are tangential).
+    const double along = col(4)[k] * p.n.x + col(5)[k] * p.n.y + col(6)[k] * p.n.z;
+    expect_close(along, f.normal.total(), 1e2 * force_scale, "normal force", k,
                  spread(fp.normal.total(), fm.normal.total()));
     expect_close(col(1)[k], f.normal.lubrication, 1e2 * force_scale, "film", k,
                  spread(fp.normal.lubrication, fm.normal.lubrication));
