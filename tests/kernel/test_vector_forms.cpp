@@ -106,6 +106,17 @@ double film_rounding(const NormalModel &m, const FilmRadius &radius, double dt)
   return 1e-13 * lub.six_pi_mu * radius.value * radius.value * terms / dt;
 }
 
+// A drawn wet particle model (draw_film: a grid or a fixed activation) and its time step.
+std::pair<NormalModel, double> draw_film_model(Draw &d, bool grid)
+{
+  Coefficients c;
+  c.e_dry = 0.9;
+  draw_film(d, grid, c);
+  EXPECT_EQ(validate(c), "");
+  const double dt = d.log_uniform(1e-8, 1e-3);
+  return {make_normal_model(c, Partner::particle, dt), dt};
+}
+
 }    // namespace
 
 TEST(InlineLog, WithinFourUlpsOfTheLibraryOverTheNormalRange)
@@ -417,13 +428,8 @@ TEST(ShearFilmApart, TheNormalFilmsLogarithmIsTheShearFilms)
   Draw d(29);
   int inside = 0, saturated = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    Coefficients c;
-    c.e_dry = 0.9;
     const bool grid = trial % 2 == 0;
-    draw_film(d, grid, c);
-    ASSERT_EQ(validate(c), "");
-    const double dt = d.log_uniform(1e-8, 1e-3);
-    const NormalModel m = make_normal_model(c, Partner::particle, dt);
+    const auto [m, dt] = draw_film_model(d, grid);
     for (int state = 0; state < 100; ++state) {
       const auto [radius, mass] = draw_pair(d);
       const double eps_al = m.lubrication.activation_for(radius);
@@ -460,13 +466,8 @@ TEST(FilmApart, ItsLambdaOfActivationIsTheActivations)
 {
   Draw d(31);
   for (int trial = 0; trial < 300; ++trial) {
-    Coefficients c;
-    c.e_dry = 0.9;
     const bool grid = trial % 2 == 0;
-    draw_film(d, grid, c);
-    ASSERT_EQ(validate(c), "");
-    const double dt = d.log_uniform(1e-8, 1e-3);
-    const NormalModel m = make_normal_model(c, Partner::particle, dt);
+    const auto [m, dt] = draw_film_model(d, grid);
     const Expansion &e = m.lubrication.expansion;
     for (int state = 0; state < 30; ++state) {
       const auto [radius, mass] = draw_pair(d);
