@@ -154,7 +154,8 @@ class PairLubricatedSpringDashpot : public Pair {
   // vectorised vector_forces() with evaluate_pair() for the rest).
   template <bool WET, bool TANGENTIAL, bool SPLIT = false> void eval();
   void update_step_reach(double **v);
-  template <bool WET, bool TANGENTIAL, bool SPLIT> int select_pairs(int &next, int &nfilm, int limit);
+  template <bool WET, bool TANGENTIAL, bool SPLIT, bool UNIFORM_REACH>
+  int select_pairs(int &next, int &nfilm, int limit);
   static constexpr int pairs_per_piece = 4096;    // pass 1's pieces (16 chunks of vector_forces)
   // What every pair of one eval() reads, gathered once per call.
   struct PairLoop {

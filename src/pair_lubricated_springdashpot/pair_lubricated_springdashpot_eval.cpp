@@ -78,7 +78,8 @@ void PairLubricatedSpringDashpot::update_step_reach(double **v)
 // In pieces: from list entry `next` on, stopping before an atom whose entries could take either
 // list past `limit` (each piece goes to pass 2 while its atoms are in the cache, and the lists
 // hold one piece, not the step's pairs); `next` is left at the first atom not selected.
-template <bool WET, bool TANGENTIAL, bool SPLIT>
+// UNIFORM_REACH: one film reach for every type pair (film_reach_uniform; no type per entry).
+template <bool WET, bool TANGENTIAL, bool SPLIT, bool UNIFORM_REACH>
 int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
 {
   const double *x = atom->x[0];               // positions, 3 per atom (one block)
@@ -90,7 +91,6 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
   int **firstneigh = list->firstneigh;
   const double *reach_table = max_reach.data();
   const int stride = ntypes_alloc + 1;
-  const bool uniform_reach = film_reach_uniform;
   const double reach_all = reach_table[stride + 1];
   // The counts in locals: the reference nfilm, which the lists' stores might alias, would keep
   // its count in memory, a store-to-load chain through every entry.
@@ -120,7 +120,7 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
       const double delz = zi - x[3 * j + 2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double touch = radi_moved + grown[j];
-      const double near = touch + (WET ? (uniform_reach ? reach_all : reach_row[type[j]]) : 0.0);
+      const double near = touch + (WET ? (UNIFORM_REACH ? reach_all : reach_row[type[j]]) : 0.0);
       out_i[ncandidate] = i;
       out_j[ncandidate] = j;
       if (TANGENTIAL) out_jj[ncandidate] = jj;
@@ -304,7 +304,8 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   int next = 0;
   do {
     int nfilm;
-    const int ncandidate = select_pairs<WET, TANGENTIAL, SPLIT>(next, nfilm, limit);
+    const int ncandidate = film_reach_uniform ? select_pairs<WET, TANGENTIAL, SPLIT, true>(next, nfilm, limit)
+                                              : select_pairs<WET, TANGENTIAL, SPLIT, false>(next, nfilm, limit);
     if (network_due) check_contact_network(ncandidate);
     if (loop.budget) reserve_records(ncandidate + nfilm);
     if constexpr (SPLIT && !TANGENTIAL) {
