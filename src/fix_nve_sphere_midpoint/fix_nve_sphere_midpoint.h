@@ -43,6 +43,10 @@ class FixNVESphereMidpoint : public Fix {
   // force-evaluation points X~ (X~^n - X~^(n-1) = dt V^n), which the step-exact contact of
   // pair_style lubricated/springdashpot needs in place of the extrapolated V~.
   const double *step_velocity(int i) const { return state[i] + 6; }
+  // The same as one block: atom i's from step_velocities() + step_velocity_stride() i (at least
+  // one atom allocated).
+  const double *step_velocities() const { return state[0] + 6; }
+  static int step_velocity_stride() { return NVALUES; }
 
  protected:
   // Per atom: 0-2 V^(n-1), 3-5 omega^(n-1) between steps; 6-8 V^n, 9-11 omega^n within one;

@@ -293,35 +293,24 @@ void FixWallLubrication::compute_walls(bool defer_films)
     else if (inverse_mass[i] > 0.0)
       walls_of_atom(i, 1.0 / inverse_mass[i]);
   };
-  // Other walls: every atom of the group. The midpoint integrator's step velocities: the
-  // planes' test below atom by atom.
-  if (!planes_only || nlocal == 0 || (midpoint && model.normal.exact)) {
-    auto may_act = [&](int i) __attribute__((always_inline))
-    {
-      if (!planes_only) return true;
-      const double r = radius[i];
-      const double *v_step = midpoint->step_velocity(i);
-      for (int k = 0; k < nplanes; k++) {
-        const Plane &w = planes[k];
-        const double gap = w.side * (x[i][w.axis] - w.position - w.shift) - r;
-        const double u_n = w.side * (v_step[w.axis] - w.velocity);
-        if (gap >= -r && model.normal.acts(gap, r, u_n)) return true;
-        if (history && history[i][w.slot * HISTORY_PER_WALL + 3] != 0.0) return true;
-      }
-      return false;
-    };
+  // Other walls: every atom of the group.
+  if (!planes_only || nlocal == 0) {
     for (int i = 0; i < nlocal; i++)
-      if (may_act(i)) evaluate_atom(i);
+      evaluate_atom(i);
     warn_behind();
     return;
   }
   // Planes: per chunk of atoms, a loop without branches (vectorised) marks those a plane may
   // act on (as lubricated::wall_point, normal_step_velocity and NormalModel::acts, to
-  // round-off) or that hold an elongation at it; then only those are evaluated.
+  // round-off) or that hold an elongation at it; then only those are evaluated. The velocities
+  // are v, or the midpoint integrator's step velocities, as blocks of rows of width vw.
   constexpr int chunk = 256;
   double near[chunk];
   int listed[chunk];
-  const double *__restrict x_all = x[0], *__restrict v_all = v[0];
+  const bool midpoint_velocity = midpoint && model.normal.exact;
+  const double *__restrict x_all = x[0];
+  const double *__restrict v_all = midpoint_velocity ? midpoint->step_velocities() : v[0];
+  const int vw = midpoint_velocity ? FixNVESphereMidpoint::step_velocity_stride() : 3;
   const double *held = history ? history[0] : nullptr;
   const lub::NormalModel &normal = model.normal;
   const double step_dt = normal.exact ? normal.step.dt : 0.0;
@@ -337,7 +326,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
         const int i = begin + c;
         const double r = radius[i];
         const double gap = w.side * (x_all[3 * i + w.axis] - w.position - w.shift) - r;
-        const double u_n = w.side * (v_all[3 * i + w.axis] - w.velocity);
+        const double u_n = w.side * (v_all[vw * i + w.axis] - w.velocity);
         const bool acts = (gap >= -r) & (gap < grid_reach + eps_reach * r + std::fabs(u_n) * step_dt);
         near[c] = acts ? 1.0 : near[c];
       }

@@ -57,9 +57,21 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
     scale_of_atom.resize(atom->nmax);
   }
   double *bound = load_of_atom.data();
-  // The sums of the bounds (per atom in `bound`), the walls' added, over all ranks: whether any
-  // can exceed the budget.
-  auto any_over = [&]() {
+  // Each atom's sum of its pairs' bounds bound_of(i, j, rsq), its wet walls' added, over all
+  // ranks: whether any can exceed the budget.
+  auto can_exceed = [&](auto &&bound_of) {
+    std::fill(bound, bound + nall, 0.0);
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      const int *jlist = list->firstneigh[i];
+      for (int jj = 0; jj < list->numneigh[i]; jj++) {
+        const int j = jlist[jj] & NEIGHMASK;
+        const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+        const double b = bound_of(i, j, delx * delx + dely * dely + delz * delz);
+        bound[i] += b;
+        if (newton_pair || j < nlocal) bound[j] += b;
+      }
+    }
     for (auto wall : walls)
       wall->add_film_share_bounds(bound, nlocal);
     if (newton_pair) {
@@ -85,47 +97,26 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
       ceiling = std::max(
           ceiling, lub::pair_film_share_ceiling(model.tangential, model.normal.lubrication, r_min, r_max, m_min, dt));
     }
-  const double *reach_table = max_reach.data();    // the types' largest film reach
-  std::fill(bound, bound + nall, 0.0);
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
-    const int *jlist = list->firstneigh[i];
-    const double *reach_row = reach_table + type[i] * stride;
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
-      const double reach = radius[i] + radius[j] + reach_row[type[j]] + skin;
-      const double b = delx * delx + dely * dely + delz * delz < reach * reach ? ceiling : 0.0;
-      bound[i] += b;
-      if (newton_pair || j < nlocal) bound[j] += b;
-    }
-  }
-  if (!any_over()) return false;
-
-  std::fill(bound, bound + nall, 0.0);
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
-    const int *jlist = list->firstneigh[i];
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const lub::ContactModel &model = models[index(type[i], type[j])];
-      const lub::Lubrication &film = model.normal.lubrication;
-      if (!film.active()) continue;
-      const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
-      const lub::FilmRadius radius_ij = lub::film_radius_pair(radius[i], radius[j]);
-      const double reach = radius[i] + radius[j] + film.reach(radius_ij.value) + skin;
-      if (delx * delx + dely * dely + delz * delz >= reach * reach) continue;
-      // The contact's share is the larger of its normal and shear films' (film_budget.h).
-      const double m_e = lub::reduced_mass(rmass[i], rmass[j]);
-      const double reduced_radius = radius[i] * radius[j] / (radius[i] + radius[j]);
-      const double b = std::max(lub::film_share_bound(film, radius_ij.value, m_e, dt),
-                                lub::shear_film_share_bound(model.tangential, film, radius_ij.value, reduced_radius,
-                                                            lub::tangential_mass_ratio * m_e, dt));
-      bound[i] += b;
-      if (newton_pair || j < nlocal) bound[j] += b;
-    }
-  }
-  return any_over();
+  // The ceiling for every pair the types' largest film reach (max_reach) plus the skin allows.
+  const bool ceiling_can_exceed = can_exceed([&](int i, int j, double rsq) {
+    const double reach = radius[i] + radius[j] + max_reach[index(type[i], type[j])] + skin;
+    return rsq < reach * reach ? ceiling : 0.0;
+  });
+  if (!ceiling_can_exceed) return false;
+  return can_exceed([&](int i, int j, double rsq) {
+    const lub::ContactModel &model = models[index(type[i], type[j])];
+    const lub::Lubrication &film = model.normal.lubrication;
+    if (!film.active()) return 0.0;
+    const lub::FilmRadius radius_ij = lub::film_radius_pair(radius[i], radius[j]);
+    const double reach = radius[i] + radius[j] + film.reach(radius_ij.value) + skin;
+    if (rsq >= reach * reach) return 0.0;
+    // The contact's share is the larger of its normal and shear films' (film_budget.h).
+    const double m_e = lub::reduced_mass(rmass[i], rmass[j]);
+    const double reduced_radius = radius[i] * radius[j] / (radius[i] + radius[j]);
+    return std::max(lub::film_share_bound(film, radius_ij.value, m_e, dt),
+                    lub::shear_film_share_bound(model.tangential, film, radius_ij.value, reduced_radius,
+                                                lub::tangential_mass_ratio * m_e, dt));
+  });
 }
 
 // Owned atoms' inverse contact masses, then the ghosts' (a rigid body's mass is known to the

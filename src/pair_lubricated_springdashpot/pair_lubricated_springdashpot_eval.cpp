@@ -55,17 +55,12 @@ void PairLubricatedSpringDashpot::update_step_reach(double **v)
   if (static_cast<int>(step_reach.size()) < nall) step_reach.resize(atom->nmax);
   double *out = step_reach.data();
   if (nall == 0) return;    // no atoms: maybe no velocity array
-  if (midpoint) {
-    for (int k = 0; k < nall; k++) {
-      const double *vk = midpoint->step_velocity(k);
-      out[k] = radius[k] + (std::fabs(vk[0]) + std::fabs(vk[1]) + std::fabs(vk[2])) * dt;
-    }
-    return;
-  }
-  // The velocities as the block they are (3 per atom): a loop the compiler vectorises.
-  const double *__restrict v_all = v[0];
+  // The velocities as the block they are (3 per atom, or the midpoint integrator's rows): a loop
+  // the compiler vectorises.
+  const double *__restrict vb = midpoint ? midpoint->step_velocities() : v[0];
+  const int w = midpoint ? FixNVESphereMidpoint::step_velocity_stride() : 3;
   for (int k = 0; k < nall; k++)
-    out[k] = radius[k] + (std::fabs(v_all[3 * k]) + std::fabs(v_all[3 * k + 1]) + std::fabs(v_all[3 * k + 2])) * dt;
+    out[k] = radius[k] + (std::fabs(vb[w * k]) + std::fabs(vb[w * k + 1]) + std::fabs(vb[w * k + 2])) * dt;
 }
 
 // Pass 1, branch-free: keep the list entries that can act within the coming step: in the
