@@ -214,18 +214,6 @@ struct Lubrication {
     return expansion.integral(f_b, l_b) - expansion.integral(f_a, l_a) + lambda_al * (f_a - f_b) +
            (lambda_saturated - lambda_al) * (s_b - s_a);
   }
-  template <bool GRID> __attribute__((always_inline)) double
-  film_integral_change_inline(double after, double before, const FilmRadius &radius, double &shear_log) const
-  {
-    double lambda_al;
-    return film_integral_change_inline<GRID>(after, before, radius, shear_log, lambda_al);
-  }
-  template <bool GRID> __attribute__((always_inline)) double film_integral_change_inline(double after, double before,
-                                                                                         const FilmRadius &radius) const
-  {
-    double unused;
-    return film_integral_change_inline<GRID>(after, before, radius, unused);
-  }
 
   // Momentum the film transfers to the pair (along n) while the gap goes from gap_before to
   // gap_after: the path integral of c_l, independent of how the path is split into steps.
