@@ -69,3 +69,30 @@ def test_coefficients_per_type_pair(lmp):
     result = lmp(script)
     assert result["e"] == pytest.approx(0.3, rel=1e-6)
     assert "types 1 2: e_d = 0.3" in lmp.log and "film" in lmp.log
+
+
+def test_papers_integrator_many_spheres_on_a_wall(lmp):
+    """Nine spheres side by side (no two in reach), each falling on the wall at its own speed
+    from its own height, under fix nve/sphere/midpoint: each rebounds with e_d. The plane wall's
+    pre-test reads each atom's step velocity from the integrator's rows (not from v): read from
+    the wrong row, it misses the step in which a contact starts and the rebound is wrong."""
+    e_dry, dt = 0.5, 0.005 * scenes.R / scenes.U
+    R, U = scenes.R, scenes.U
+    atoms = "".join(f"create_atoms 1 single {4 * R * (k - 4)} 0 {R * (1.2137 + 0.37 * k)}\n" for k in range(9))
+    speeds = "".join(f"velocity s{k} set 0 0 {-U * (0.5 + 0.2 * k)}\n" for k in range(9))
+    groups = "".join(f"group s{k} id {k + 1}\n" for k in range(9))
+    steps = int(8.0 * R / (0.5 * U) / dt) + 80
+    result = lmp(scenes.HEADER.replace("${newton}", "on") + f"""
+region box block -0.02 0.02 -0.01 0.01 0 0.02
+create_box 1 box
+{atoms}set group all diameter {2 * R} density {scenes.RHO}
+{groups}{speeds}pair_style lubricated/springdashpot
+pair_coeff * * 0.9
+fix wall all wall/lubrication {e_dry} ncontact 8 zplane 0.0 NULL
+fix nve all nve/sphere/midpoint
+timestep {dt}
+thermo 0
+run {steps}
+""" + "".join(f'print "RESULT e{k} $(vz[{k + 1}]/{U * (0.5 + 0.2 * k)}:%.15g)"\n' for k in range(9)))
+    for k in range(9):
+        assert result[f"e{k}"] == pytest.approx(e_dry, rel=0.01), k
