@@ -29,7 +29,8 @@ def available():
     return ""
 
 
-def command(nprocs=1, launcher=False, preload=True):
+def command(nprocs=1, launcher=False, preload=True, exported=()):
+    """The command line; exported: environment variables mpirun passes on to the ranks."""
     program = str(LAUNCHER) if launcher else LIGGGHTS
     if nprocs == 1:
         return [program]
@@ -38,18 +39,22 @@ def command(nprocs=1, launcher=False, preload=True):
         args.append("--allow-run-as-root")
     if preload and not launcher:
         args += ["-x", "LD_PRELOAD"]
+    for name in exported:
+        args += ["-x", name]
     return args + [program]
 
 
 def run(script, workdir, nprocs=1, name="in.liggghts", timeout=600, check=True, launcher=False,
-        preload=True, variables=None):
-    """Write script to workdir/name, run LIGGGHTS on it, return (results dict, log text)."""
+        preload=True, variables=None, environment=None):
+    """Write script to workdir/name, run LIGGGHTS on it, return (results dict, log text).
+    environment: extra environment variables for every rank."""
     workdir = pathlib.Path(workdir)
     workdir.mkdir(parents=True, exist_ok=True)
     (workdir / name).write_text(script)
     log = workdir / (name + ".log")
     # A screen file, not "-screen none": LIGGGHTS's mesh reader prints to screen unchecked.
-    args = command(nprocs, launcher, preload) + ["-in", name, "-log", log.name,
+    environment = environment or {}
+    args = command(nprocs, launcher, preload, environment.keys()) + ["-in", name, "-log", log.name,
                                                  "-screen", name + ".screen", "-echo", "none"]
     for key, value in (variables or {}).items():
         args += ["-var", key, str(value)]
@@ -59,6 +64,7 @@ def run(script, workdir, nprocs=1, name="in.liggghts", timeout=600, check=True, 
         env["LD_PRELOAD"] = str(LIBRARY)
     env["OMP_NUM_THREADS"] = "1"
     env["OMPI_MCA_btl_vader_single_copy_mechanism"] = "none"
+    env.update({key: str(value) for key, value in environment.items()})
     # errors="replace": LIGGGHTS prints some ERROR texts a second time from freed memory.
     proc = subprocess.run(args, cwd=workdir, env=env, capture_output=True, text=True,
                           encoding="utf-8", errors="replace", timeout=timeout)

@@ -3,6 +3,26 @@
 // launcher). Everything here runs from a static initialiser, after libliggghts.so's own.
 #include "liggghts/register_lubricated.h"
 
+namespace lubricated {
+namespace liggghts {
+
+namespace {
+LIGGGHTS::ContactModels::ContactModelBase *last_pair_model = nullptr;
+}
+
+void note_pair_contact_model(LIGGGHTS::ContactModels::ContactModelBase *model)
+{
+  last_pair_model = model;
+}
+
+LIGGGHTS::ContactModels::ContactModelBase *last_pair_contact_model()
+{
+  return last_pair_model;
+}
+
+}    // namespace liggghts
+}    // namespace lubricated
+
 namespace {
 
 struct RegisterLubricated {

@@ -55,6 +55,16 @@ NORMAL_MODEL(LUBRICATED, lubricated, 42)
 #include <string>
 #include <vector>
 
+namespace lubricated {
+namespace liggghts {
+// The ContactModel that LIGGGHTS's Granular pair style keeps private (pair_pass.h reaches it
+// through these): a pair's normal model records its parent, the ContactModel being built, in
+// its constructor, which runs inside Granular's.
+void note_pair_contact_model(LIGGGHTS::ContactModels::ContactModelBase *model);
+LIGGGHTS::ContactModels::ContactModelBase *last_pair_contact_model();
+}    // namespace liggghts
+}    // namespace lubricated
+
 namespace LIGGGHTS {
 namespace ContactModels {
 
@@ -67,6 +77,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
       NormalModelBase(lmp, hsetup, cmb), is_wall_(cmb->is_wall()),
       pair_(is_wall_ ? nullptr : static_cast<LAMMPS_NS::PairGran *>(hsetup)), hsetup_(hsetup)
   {
+    if (!is_wall_) lubricated::liggghts::note_pair_contact_model(cmb);
   }
 
   void registerSettings(Settings &) {}

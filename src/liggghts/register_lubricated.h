@@ -9,6 +9,7 @@
 #include "liggghts/insert_stream_stub.h"
 #include "pair_gran_base.h"
 #undef FixInsertStream
+#include "liggghts/pair_pass.h"
 
 namespace lubricated {
 namespace liggghts {
@@ -16,7 +17,7 @@ namespace liggghts {
 template <class Style>
 LIGGGHTS::PairStyles::IGranularPairStyle *create_pair(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::PairGran *parent, int64_t hash)
 {
-  return new LIGGGHTS::PairStyles::Granular<LIGGGHTS::ContactModels::ContactModel<Style>>(lmp, parent, hash);
+  return new PairPass<LIGGGHTS::ContactModels::ContactModel<Style>>(lmp, parent, hash);
 }
 
 template <class Style>
