@@ -10,7 +10,8 @@
 // beyond every model's reach and each close pair is only listed (close_pairs.h). This pass
 // skips the pairs beyond the contact distance after their distance alone and reads the flat
 // per-atom blocks. Every option the lean pass leaves out (energy or virial tallies, stored or
-// summed contact forces, coupling, multicontact radii, non-spherical particles) makes it call LIGGGHTS's own pass instead.
+// summed contact forces, coupling, multicontact radii, non-spherical particles) makes it call
+// LIGGGHTS's own pass instead.
 #pragma once
 
 #include "liggghts/normal_model_lubricated.h"
@@ -61,10 +62,14 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
   void init_granular() override
   {
     Base::init_granular();
-    if (pass_requested().empty())
-      lmp_->error->all(FLERR, (std::string("pair gran model lubricated: LUBRICATED_LIGGGHTS_PASS = '") +
-                               std::getenv("LUBRICATED_LIGGGHTS_PASS") + "' (expected lean or liggghts)")
-                                  .c_str());
+    if (pass_requested().empty()) {
+      // LIGGGHTS's Error::all throws with a pointer to the text, printed after the pair style is
+      // gone: the text must outlive it.
+      static std::string message;
+      message = std::string("pair gran model lubricated: LUBRICATED_LIGGGHTS_PASS = '") +
+                std::getenv("LUBRICATED_LIGGGHTS_PASS") + "' (expected lean or liggghts)";
+      lmp_->error->all(FLERR, message.c_str());
+    }
     if (lmp_->comm->me != 0) return;
     const char *line = lean_ ? "pair gran model lubricated: lean pair pass (LIGGGHTS's own where a per-pair "
                                "force is read; LUBRICATED_LIGGGHTS_PASS=liggghts for it everywhere)\n"
