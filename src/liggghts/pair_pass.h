@@ -21,7 +21,6 @@
 #include "error.h"
 #include "lammps.h"
 #include "force.h"
-#include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair_gran.h"
@@ -118,7 +117,6 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
     std::memset(static_cast<void *>(&sidata), 0, sizeof(sidata));
     sidata.area_ratio = 1.0;
     ForceData i_forces, j_forces;
-    sidata.is_wall = false;
     sidata.computeflag = pg->computeflag();
     sidata.shearupdate = pg->shearupdate();
     model_.beginPass(sidata, i_forces, j_forces);
