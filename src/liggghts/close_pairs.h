@@ -1,7 +1,8 @@
 // The pairs LIGGGHTS's pair loop finds close (within its contact distance, not in overlap) in
-// one step of `model lubricated`: listed by surfacesClose() and evaluated together at the end
-// of the pass (endPass) in one loop without branches or calls, which the compiler vectorises,
-// as the LAMMPS pair style's film loops do (src/pair_lubricated_springdashpot/vector_pairs.h).
+// one step of `model lubricated`: listed by surfacesClose() and evaluated together, in pieces of
+// the pass (each piece while its atoms are still in the cache; the last at endPass), in one loop
+// without branches or calls, which the compiler vectorises, as the LAMMPS pair style's film
+// loops do (src/pair_lubricated_springdashpot/vector_pairs.h).
 //
 // LIGGGHTS calls surfacesClose() for every pair within contactDistanceFactor (r_i + r_j); that
 // factor is the largest any model registers, the walls' (their film reaches 0.75 dx of the

@@ -17,7 +17,7 @@
 // Every film also enters the many-body film budget (fix_lubricated_film_budget.h), which the
 // pair's model creates; walls join it when a pair model lubricated exists. A step evaluates
 // sustained contacts and pairs apart over the step in the kernel's closed forms, and lists the
-// pair's close pairs for one vectorised loop at the end of the pass (close_pairs.h).
+// pair's close pairs for a vectorised loop, in pieces while their atoms are in the cache (close_pairs.h).
 #pragma once
 
 #ifdef NORMAL_MODEL
@@ -97,7 +97,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   }
   void endPass(SurfacesIntersectData &, ForceData &, ForceData &)
   {
-    if (close_.size() > 0) close_.apply(lmp, pair_, models_[close_type_], budget_on_ ? budget_ : nullptr);
+    if (close_.size() > 0) apply_close_pairs();
   }
   double stressStrainExponent() { return 1.0; }
 
@@ -190,6 +190,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     const int t = scdata.itype * (ntypes_ + 1) + scdata.jtype;
     if (defer_close_ && (t == close_type_ || first_close_type(t))) {
       close_.add(scdata.i, scdata.j, scdata.contact_flags);
+      if (close_.size() == close_piece) apply_close_pairs();
       return;
     }
     if (update->dt != dt_) build_models();
@@ -204,6 +205,15 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   }
 
  private:
+  // The close pairs listed so far, evaluated and applied while their atoms are still in the cache
+  // (a piece of the pass; the film budget takes its records at the step's end).
+  static constexpr int close_piece = 1024;
+  __attribute__((noinline)) void apply_close_pairs()
+  {
+    close_.apply(lmp, pair_, models_[close_type_], budget_on_ ? budget_ : nullptr);
+    close_.clear();
+  }
+
   __attribute__((noinline)) void close_pair_acts(SurfacesCloseData &scdata, const lubricated::NormalModel &model,
                                                  ForceData &i_forces, ForceData &j_forces)
   {
@@ -510,7 +520,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   lubricated::liggghts::FixLubricatedFilmBudget *budget_ = nullptr;
   lubricated::liggghts::FixLubricatedStepVelocity *step_velocity_ = nullptr;
   bool budget_on_ = false;
-  bool defer_close_ = false;    // this pass lists its close pairs for ClosePairs::apply (endPass)
+  bool defer_close_ = false;    // this pass lists its close pairs for ClosePairs::apply (apply_close_pairs)
   int close_type_ = -1;         // their type pair
   lubricated::liggghts::ClosePairs close_;
   bool plain_masses_ = false;    // this pass: every atom integrated, none held or rigid (beginPass)
