@@ -70,8 +70,8 @@ struct ClosePairs {
   std::vector<double> force_x, force_y, force_z, film, capacity;
 
   void clear() { count_ = 0; }
-  // One test per pair (surfacesClose() lists every close pair of a pass).
-  void add(int atom_i, int atom_j, int *flag)
+  // One test per pair (surfacesClose() lists every close pair of a pass; GCC left it a call).
+  __attribute__((always_inline)) void add(int atom_i, int atom_j, int *flag)
   {
     if (count_ == static_cast<int>(i_.size())) grow();
     i_[count_] = atom_i;
@@ -93,7 +93,7 @@ struct ClosePairs {
              class FixLubricatedFilmBudget *budget);
 
  private:
-  void grow()
+  __attribute__((noinline)) void grow()
   {
     const size_t size = std::max<size_t>(1024, 2 * i_.size());
     i_.resize(size);
