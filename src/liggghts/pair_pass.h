@@ -101,7 +101,9 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
     using namespace LIGGGHTS::ContactModels;
     LAMMPS_NS::Atom *atom = lmp_->atom;
     const double *x = atom->x[0], *radius = atom->radius, *rmass = atom->rmass;
-    double **v = atom->v, **omega = atom->omega;
+    // v and omega as the blocks they are (3 per atom): a row pointer per neighbour is a dependent
+    // load, which misses the cache in large beds.
+    double *v = atom->v[0], *omega = atom->omega[0];
     double *f = atom->f[0], *torque = atom->torque[0];
     const int *type = atom->type, *mask = atom->mask;
     const int nlocal = atom->nlocal, newton_pair = lmp_->force->newton_pair;
@@ -145,8 +147,8 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
         sidata.radsum = radsum;
         sidata.contact_flags = flags ? &flags[jj] : nullptr;
         sidata.contact_history = history ? &history[dnum * jj] : nullptr;
-        sidata.v_i = v[i];
-        sidata.v_j = v[j];
+        sidata.v_i = v + 3 * i;
+        sidata.v_j = v + 3 * j;
         sidata.itype = type[i];
         sidata.jtype = type[j];
         i_forces.reset();
@@ -171,8 +173,8 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
             sidata.en[1] = dely * rinv;
             sidata.en[2] = delz * rinv;
           }
-          sidata.omega_i = omega[i];
-          sidata.omega_j = omega[j];
+          sidata.omega_i = omega + 3 * i;
+          sidata.omega_j = omega + 3 * j;
           model_.surfacesIntersect(sidata, i_forces, j_forces);
           model_.endSurfacesIntersect(sidata, nullptr, i_forces, j_forces);
           sidata.has_force_update = true;
