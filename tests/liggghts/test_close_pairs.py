@@ -46,8 +46,8 @@ def test_close_pairs_loop_equals_the_per_pair_path(run, activation, nprocs):
 def test_close_pairs_in_pieces_equal_the_per_pair_path(run, nprocs):
     """A pass evaluates its close pairs in pieces of 1024 while their atoms are in the cache
     (src/liggghts/normal_model_lubricated.h). The periodic fcc lattice of 500 spheres (gaps of
-    0.002 R, each sphere's 12 neighbours in the film, St = 1) has 3000 close pairs on one rank,
-    more with newton off across ranks: every pass spans several pieces and ends inside one. A
+    0.002 R, each sphere's 12 neighbours in the film, St = 1) has at least 3000 close pairs a
+    pass (newton off: more, where a pair's atom is a ghost): every pass spans several pieces. A
     piece applied twice or dropped moves the spheres far beyond the tolerance (above)."""
     script = dense.fcc(dense.viscosity_for_stokes(1.0), 1e-6, steps=300, every=30, cells=5)
     if nprocs == 2:
