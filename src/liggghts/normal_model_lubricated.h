@@ -17,7 +17,8 @@
 // Every film also enters the many-body film budget (fix_lubricated_film_budget.h), which the
 // pair's model creates; walls join it when a pair model lubricated exists. A step evaluates
 // sustained contacts and pairs apart over the step in the kernel's closed forms, and lists the
-// pair's close pairs for a vectorised loop, in pieces while their atoms are in the cache (close_pairs.h).
+// pair's close pairs for a vectorised loop, run in pieces while their atoms are in the cache
+// (close_pairs.h).
 #pragma once
 
 #ifdef NORMAL_MODEL
@@ -181,7 +182,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // Near contact: the film, and the step-exact contact's first and last steps. LIGGGHTS calls
   // this for every pair within its contact distance, which the walls' film sets (reach 0.75 dx
   // of the smallest radius; about five pairs per sphere and step): in a step the pair's are
-  // listed for one loop (close_pairs.h). The listing and the test that most pairs fail are
+  // listed for the vectorised loop, run for every close_piece of them (close_pairs.h). The listing and the test that most pairs fail are
   // inlined into the pair's pass (GCC left them a call: 3-13 % of an active bed's time), the
   // rest is a call.
   __attribute__((always_inline)) inline void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces,
