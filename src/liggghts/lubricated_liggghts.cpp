@@ -8,11 +8,19 @@ namespace liggghts {
 
 namespace {
 LIGGGHTS::ContactModels::ContactModelBase *last_pair_model = nullptr;
-}
+LIGGGHTS::ContactModels::NormalModel<LIGGGHTS::ContactModels::LUBRICATED> *last_normal_model = nullptr;
+}    // namespace
 
-void note_pair_contact_model(LIGGGHTS::ContactModels::ContactModelBase *model)
+void note_pair_contact_model(LIGGGHTS::ContactModels::ContactModelBase *model,
+                             LIGGGHTS::ContactModels::NormalModel<LIGGGHTS::ContactModels::LUBRICATED> *normal)
 {
   last_pair_model = model;
+  last_normal_model = normal;
+}
+
+LIGGGHTS::ContactModels::NormalModel<LIGGGHTS::ContactModels::LUBRICATED> *last_pair_normal_model()
+{
+  return last_normal_model;
 }
 
 LIGGGHTS::ContactModels::ContactModelBase *last_pair_contact_model()

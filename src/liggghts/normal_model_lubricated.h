@@ -56,21 +56,27 @@ NORMAL_MODEL(LUBRICATED, lubricated, 42)
 #include <string>
 #include <vector>
 
+namespace LIGGGHTS {
+namespace ContactModels {
+template <int> class NormalModel;
+static const int LUBRICATED = 42;    // normal-model identifier: 6 bits, unused by LIGGGHTS 3.8.0's (0-12)
+}    // namespace ContactModels
+}    // namespace LIGGGHTS
+
 namespace lubricated {
 namespace liggghts {
-// The ContactModel that LIGGGHTS's Granular pair style keeps private (pair_pass.h reaches it
-// through these): a pair's normal model records its parent, the ContactModel being built, in
-// its constructor, which runs inside Granular's.
-void note_pair_contact_model(LIGGGHTS::ContactModels::ContactModelBase *model);
+// The ContactModel that LIGGGHTS's Granular pair style keeps private, and its normal model
+// (pair_pass.h reaches them through these): a pair's normal model records itself and its parent,
+// the ContactModel being built, in its constructor, which runs inside Granular's.
+void note_pair_contact_model(LIGGGHTS::ContactModels::ContactModelBase *model,
+                             LIGGGHTS::ContactModels::NormalModel<LIGGGHTS::ContactModels::LUBRICATED> *normal);
 LIGGGHTS::ContactModels::ContactModelBase *last_pair_contact_model();
+LIGGGHTS::ContactModels::NormalModel<LIGGGHTS::ContactModels::LUBRICATED> *last_pair_normal_model();
 }    // namespace liggghts
 }    // namespace lubricated
 
 namespace LIGGGHTS {
 namespace ContactModels {
-
-// Normal-model identifier: 6 bits, unused by the normal models of LIGGGHTS 3.8.0 (0-12).
-static const int LUBRICATED = 42;
 
 template <> class NormalModel<LUBRICATED> : public NormalModelBase {
  public:
@@ -78,7 +84,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
       NormalModelBase(lmp, hsetup, cmb), is_wall_(cmb->is_wall()),
       pair_(is_wall_ ? nullptr : static_cast<LAMMPS_NS::PairGran *>(hsetup)), hsetup_(hsetup)
   {
-    if (!is_wall_) lubricated::liggghts::note_pair_contact_model(cmb);
+    if (!is_wall_) lubricated::liggghts::note_pair_contact_model(cmb, this);
   }
 
   void registerSettings(Settings &) {}
@@ -87,6 +93,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   {
     if (is_wall_) return;
     if (update->dt != dt_) build_models();
+    bound_idle_pairs();
     plain_masses_ =
         hold_bits_ == 0 && (integrate_bits_ & all_group_bit) && pair_->freeze_group_bit() == 0 && !pair_->fr_pair();
     defer_close_ = defer_close_pairs(sidata);
@@ -179,6 +186,12 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     }
   }
 
+  // A pair apart (rsq >= radsum^2) beyond idle_reach(radsum) can act in no type pair's model
+  // within the coming step, so surfacesClose() does nothing for it: it is not listed, and the
+  // lean pass (pair_pass.h) skips it where no contact flag asks LIGGGHTS's models to reset it.
+  // Both passes thus list the same pairs and apply the same pieces.
+  __attribute__((always_inline)) double idle_reach(double radsum) const { return radsum * idle_scale_ + idle_offset_; }
+
   // Near contact: the film, and the step-exact contact's first and last steps. LIGGGHTS calls
   // this for every pair within its contact distance, which the walls' film sets (reach 0.75 dx
   // of the smallest radius; about five pairs per sphere and step): in a step the pair's are
@@ -188,6 +201,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   __attribute__((always_inline)) inline void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces,
                                                            ForceData &j_forces)
   {
+    const double idle = idle_reach(scdata.radsum);
+    if (!(scdata.rsq < idle * idle)) return;
     const int t = scdata.itype * (ntypes_ + 1) + scdata.jtype;
     if (defer_close_ && (t == close_type_ || first_close_type(t))) {
       close_.add(scdata.i, scdata.j, scdata.contact_flags);
@@ -237,6 +252,34 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     scdata.has_force_update = true;
     if (fn.lubrication != 0.0 && budget_on_ && budget_->active())
       record_film(scdata, fn.lubrication * (is_wall_ ? scdata.area_ratio : 1.0), en, m_e, u_n, continued);
+  }
+
+  // idle_reach(): beyond radsum + the film's reach + what both atoms can move in the step, no
+  // type pair's model acts (NormalModel::acts false: gap >= reach(R) + |u_n| dt). The reach is
+  // 0.75 dx with a grid, else eps_al R with R = 2 r_i r_j / (r_i + r_j) <= radsum / 2; each atom's
+  // move is bounded by the largest |v|_1 dt of the rank's atoms, ghosts included (v^(n-1/2), as
+  // u_n). A relative margin of 1e-9 covers the rounding of the tests. A continued run's kick
+  // changes u_n: no pair is idle there.
+  void bound_idle_pairs()
+  {
+    idle_scale_ = INFINITY, idle_offset_ = 0.0;
+    if (step_velocity_->continues()) return;
+    double eps_max = 0.0, reach_max = 0.0;
+    for (const lubricated::NormalModel &m : models_) {
+      const lubricated::Lubrication &film = m.lubrication;
+      if (!film.active()) continue;
+      if (film.grid_spacing > 0.0)
+        reach_max = std::max(reach_max, film.reach(0.0));
+      else
+        eps_max = std::max(eps_max, film.eps_activation);
+    }
+    const double *v = atom->v[0];
+    const int nall = atom->nlocal + atom->nghost;
+    double speed_max = 0.0;
+    for (int k = 0; k < nall; k++)
+      speed_max = std::max(speed_max, std::fabs(v[3 * k]) + std::fabs(v[3 * k + 1]) + std::fabs(v[3 * k + 2]));
+    idle_scale_ = (1.0 + 0.5 * eps_max) * (1.0 + 1e-9);
+    idle_offset_ = (reach_max + 2.0 * speed_max * dt_) * (1.0 + 1e-9);
   }
 
   // LAMMPS's group `all` (always the first group).
@@ -529,6 +572,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   std::string message_;
   int ntypes_ = 0;
   double dt_ = -1.0;
+  double idle_scale_ = INFINITY, idle_offset_ = 0.0;    // idle_reach() (pairs; walls: none idle)
   std::vector<lubricated::Coefficients> coefficients_;
   std::vector<lubricated::NormalModel> models_;
 };

@@ -8,7 +8,9 @@
 // neighbour). The film of `model lubricated` widens LIGGGHTS's contact distance (the walls'
 // film reach, twice a pair's: normal_model_lubricated.h), so about one neighbour in three lies
 // beyond every model's reach and each close pair is only listed (close_pairs.h). This pass
-// skips the pairs beyond the contact distance after their distance alone and reads the flat
+// skips the pairs beyond the contact distance after their distance alone, and so the pairs
+// without a contact flag beyond the normal model's reach over the step (its film's and both
+// atoms' moves), for which every model's surfacesClose() does nothing; it reads the flat
 // per-atom blocks. Every option the lean pass leaves out (energy or virial tallies, stored or
 // summed contact forces, coupling, multicontact radii, non-spherical particles) makes it call
 // LIGGGHTS's own pass instead.
@@ -46,13 +48,19 @@ inline std::string pass_requested()
   return std::strcmp(value, "liggghts") == 0 ? "liggghts" : "";
 }
 
+// The GranStyle of a ContactModel (its surface, normal, cohesion, tangential and rolling models).
+template <class CM> struct StyleOf;
+template <class S> struct StyleOf<LIGGGHTS::ContactModels::ContactModel<S>> {
+  using type = S;
+};
+
 template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular<CM> {
   using Base = LIGGGHTS::PairStyles::Granular<CM>;
 
  public:
   PairPass(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::PairGran *parent, int64_t hash) :
       Base(lmp, parent, hash), lmp_(lmp), model_(*static_cast<CM *>(last_pair_contact_model())),
-      lean_(pass_requested() == "lean")
+      normal_(*last_pair_normal_model()), lean_(pass_requested() == "lean")
   {
   }
 
@@ -113,7 +121,7 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
     const int dnum = pg->dnum(), freeze_bit = pg->freeze_group_bit();
     const bool rigid = pg->fr_pair();
     const double *rigid_mass = rigid ? pg->mr_pair() : nullptr;
-    const double factor = lmp_->neighbor->contactDistanceFactor, close_sq = factor * factor;
+    const double factor = lmp_->neighbor->contactDistanceFactor;
 
     SurfacesIntersectData sidata;    // zeroed as LIGGGHTS's pass zeroes its own
     std::memset(static_cast<void *>(&sidata), 0, sizeof(sidata));
@@ -136,8 +144,14 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
         const double delx = xi - x[3 * j], dely = yi - x[3 * j + 1], delz = zi - x[3 * j + 2];
         const double rsq = delx * delx + dely * dely + delz * delz;
         const double radj = radius[j], radsum = radi + radj;
-        // Beyond the contact distance LIGGGHTS's pass calls no model: nothing to do.
-        if (!(rsq < close_sq * radsum * radsum)) continue;
+        // Beyond the contact distance LIGGGHTS's pass calls no model: nothing to do. Nor for a
+        // pair without a contact flag beyond the normal model's reach over the step (idle_reach),
+        // whose models' surfacesClose() would do nothing (idle_close_pairs): one test, its
+        // distance chosen by the flag.
+        const double wide = factor * radsum;
+        const bool flagless = idle_close_pairs && (!flags || flags[jj] == 0);
+        const double outer = flagless ? std::min(wide, normal_.idle_reach(radsum)) : wide;
+        if (!(rsq < outer * outer)) continue;
         sidata.radj = radj;
         sidata.j = j;
         sidata.delta[0] = delx;
@@ -198,8 +212,22 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
     }
   }
 
+  // Whether every model but the normal one does nothing in surfacesClose() for a pair without
+  // a contact flag: the default surface model, no cohesion, no rolling resistance, and a
+  // tangential model that is off or only clears its flag and zeroes its history there (a flag
+  // of 0 means LIGGGHTS's history of the pair is zero: the models set a flag with any history
+  // and clear both together, and a neighbour build restores a history with its flag).
+  using Style = typename StyleOf<CM>::type;
+  static constexpr bool idle_close_pairs = Style::SURFACE == LIGGGHTS::ContactModels::SURFACE_DEFAULT &&
+                                           Style::COHESION == LIGGGHTS::ContactModels::COHESION_OFF &&
+                                           Style::ROLLING == LIGGGHTS::ContactModels::ROLLING_OFF &&
+                                           (Style::TANGENTIAL == LIGGGHTS::ContactModels::TANGENTIAL_OFF ||
+                                            Style::TANGENTIAL == LIGGGHTS::ContactModels::TANGENTIAL_NO_HISTORY ||
+                                            Style::TANGENTIAL == LIGGGHTS::ContactModels::TANGENTIAL_HISTORY);
+
   LAMMPS_NS::LAMMPS *lmp_;
   CM &model_;
+  const LIGGGHTS::ContactModels::NormalModel<LIGGGHTS::ContactModels::LUBRICATED> &normal_;
   const bool lean_;    // false: always LIGGGHTS's pass (LUBRICATED_LIGGGHTS_PASS=liggghts)
 };
 
