@@ -81,6 +81,16 @@ def test_lean_pass_follows_liggghts_pass_in_a_dense_frictional_bed(run, packings
     assert_same_state(own, lean, rel=ROUND_OFF)
 
 
+# The small scenes' integration and output (dt = 1e-5 s, thermo every 10 steps).
+STEPPING = """fix nve all nve/sphere
+timestep 1e-5
+thermo_style custom step ke
+thermo 10
+neighbor 3e-4 bin
+neigh_modify delay 0
+"""
+
+
 def fast_pairs(wet, processors=""):
     """Four head-on pairs (R = 1 mm) closing at 2 m/s, 2e-5 m a step: more than the film's reach
     (0.75 dx = 7.5e-6 m) and less than LIGGGHTS's approach margin (0.02 (r_i + r_j)); gaps so
@@ -103,13 +113,7 @@ create_box 2 box
 pair_style gran model lubricated tangential history
 pair_coeff * *
 {lines}
-{film}fix nve all nve/sphere
-timestep 1e-5
-thermo_style custom step ke
-thermo 10
-neighbor 3e-4 bin
-neigh_modify delay 0
-run 40
+{film}{STEPPING}run 40
 """ + dump_state()
 
 
@@ -143,13 +147,7 @@ group one id 1
 group two id 2
 {properties(0.9, 0.0, 8, friction=0.3)}fix push1 one addforce {push} 0 0
 fix push2 two addforce {-push} 0 0
-fix nve all nve/sphere
-timestep 1e-5
-thermo_style custom step ke
-thermo 10
-neighbor 3e-4 bin
-neigh_modify delay 0
-run 40
+{STEPPING}run 40
 fix jerk all deform 1 x wiggle 4.4e-5 8e-5 remap x
 run 8
 unfix jerk
