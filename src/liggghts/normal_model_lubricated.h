@@ -262,7 +262,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // changes u_n: no pair is idle there.
   void bound_idle_pairs()
   {
-    idle_scale_ = INFINITY, idle_offset_ = 0.0;
+    idle_scale_ = 1.0, idle_offset_ = INFINITY;
     if (step_velocity_->continues()) return;
     double eps_max = 0.0, reach_max = 0.0;
     for (const lubricated::NormalModel &m : models_) {
@@ -572,7 +572,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   std::string message_;
   int ntypes_ = 0;
   double dt_ = -1.0;
-  double idle_scale_ = INFINITY, idle_offset_ = 0.0;    // idle_reach() (pairs; walls: none idle)
+  double idle_scale_ = 1.0, idle_offset_ = INFINITY;    // idle_reach() (pairs; walls: none idle)
   std::vector<lubricated::Coefficients> coefficients_;
   std::vector<lubricated::NormalModel> models_;
 };
