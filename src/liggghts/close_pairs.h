@@ -33,13 +33,11 @@ namespace liggghts {
 // over the whole step, where no contact can act (the film alone). False where they do not
 // apply: normal_force() then.
 inline bool sustained_contact(const NormalModel &model, double gap, const FilmRadius &radius, double m_e, double u_n,
-                              bool stepping, NormalForce &fn)
+                              bool stepping, NormalForce &fn, double lambda_al)
 {
   if (!model.exact || !stepping) return false;
   bool sustained = false;
-  // One pair: lambda(eps_al) by std::log (log_inline's series is a chain of dependent operations).
-  fn =
-      sustained_contact_force(model, gap, radius, m_e, u_n, model.lubrication.lambda_activation_for(radius), sustained);
+  fn = sustained_contact_force(model, gap, radius, m_e, u_n, lambda_al, sustained);
   return sustained;
 }
 

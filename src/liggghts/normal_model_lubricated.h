@@ -89,6 +89,18 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
 
   void registerSettings(Settings &) {}
   void postSettings(IContactHistorySetup *, ContactModelBase *) {}
+
+  // A pair whose contacts keep a history (LIGGGHTS's tangential model's) keeps lambda(eps_al) of
+  // each contact's film in it too (history_lambda); without one none is made (it would cost every
+  // pair a history). Called by the pair's pass (pair_pass.h) once its models are built, as for a
+  // pair style read from a restart file (which calls no postSettings), with the history values
+  // registered so far.
+  void keep_lambda_in_history(IContactHistorySetup *hsetup, int history_values)
+  {
+    if (is_wall_ || history_values == 0 || lambda_offset_ >= 0) return;
+    lambda_offset_ = hsetup->add_history_value("lubricatedEpsAl", "0");
+    hsetup->add_history_value("lubricatedLambdaAl", "0");
+  }
   void beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &)
   {
     if (is_wall_) return;
@@ -161,7 +173,10 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     if (!update->setupflag && gap - u_n * dt_ >= (neighbor->contactDistanceFactor - 1.0) * sidata.radsum)
       missed_approach(u_n);    // entered from beyond the close range: no step before was seen
     lubricated::NormalForce fn;
-    if (!lubricated::liggghts::sustained_contact(model, gap, radius, m_e, u_n, stepping(continued), fn))
+    const bool step = stepping(continued);    // lambda(eps_al) only where sustained_contact uses it
+    if (!(model.exact && step &&
+          lubricated::liggghts::sustained_contact(model, gap, radius, m_e, u_n, step, fn,
+                                                  history_lambda(model.lubrication, radius, sidata.contact_history))))
       fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation(continued));
 
     // Tangential and rolling models of LIGGGHTS read these: the solid contact force for the
@@ -280,6 +295,20 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
       speed_max = std::max(speed_max, std::fabs(v[3 * k]) + std::fabs(v[3 * k + 1]) + std::fabs(v[3 * k + 2]));
     idle_scale_ = (1.0 + 0.5 * eps_max) * (1.0 + 1e-9);
     idle_offset_ = (reach_max + 2.0 * speed_max * dt_) * (1.0 + 1e-9);
+  }
+
+  // lambda(eps_al) of a contact's film (Lubrication::lambda_activation_for, a logarithm): kept in
+  // the contact's history with eps_al as its key, which fixes it (the film radius and the grid
+  // spacing and saturation enter through eps_al alone, within rounding); a new contact's history
+  // is zero, no eps_al. A sustained contact so takes one logarithm, not one per step.
+  __attribute__((always_inline)) double history_lambda(const lubricated::Lubrication &film,
+                                                       const lubricated::FilmRadius &radius, double *history)
+  {
+    if (lambda_offset_ < 0 || !history || film.grid_spacing <= 0.0) return film.lambda_activation_for(radius);
+    double *kept = history + lambda_offset_;
+    const double eps_al = film.activation_for(radius);
+    if (kept[0] != eps_al) kept[0] = eps_al, kept[1] = film.lambda_activation_for(radius);
+    return kept[1];
   }
 
   // LAMMPS's group `all` (always the first group).
@@ -572,6 +601,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   std::string message_;
   int ntypes_ = 0;
   double dt_ = -1.0;
+  int lambda_offset_ = -1;                              // eps_al, lambda(eps_al) in a pair's contact history (-1: none)
   double idle_scale_ = 1.0, idle_offset_ = INFINITY;    // idle_reach() (pairs; walls: none idle)
   std::vector<lubricated::Coefficients> coefficients_;
   std::vector<lubricated::NormalModel> models_;

@@ -62,6 +62,7 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
       Base(lmp, parent, hash), lmp_(lmp), model_(*static_cast<CM *>(last_pair_contact_model())),
       normal_(*last_pair_normal_model()), lean_(pass_requested() == "lean")
   {
+    normal_.keep_lambda_in_history(parent, parent->dnum_pair());
   }
 
   // At every run's init (the model reads its properties there): the pass a run takes, in the
@@ -227,7 +228,7 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
 
   LAMMPS_NS::LAMMPS *lmp_;
   CM &model_;
-  const LIGGGHTS::ContactModels::NormalModel<LIGGGHTS::ContactModels::LUBRICATED> &normal_;
+  LIGGGHTS::ContactModels::NormalModel<LIGGGHTS::ContactModels::LUBRICATED> &normal_;
   const bool lean_;    // false: always LIGGGHTS's pass (LUBRICATED_LIGGGHTS_PASS=liggghts)
 };
 

@@ -101,3 +101,27 @@ facet normal 0 0 1
 endfacet
 endsolid plane
 """
+
+
+@pytest.mark.parametrize("grid_change", [False, True])
+def test_contact_history_keeps_the_film_lambda(run, grid_change):
+    """With LIGGGHTS's tangential history a contact keeps lambda(eps_al) of its film in its history
+    (keyed by eps_al; normal_model_lubricated.h, history_lambda), without one it is computed at
+    every step. A head-on impact (no tangential force) must move the same both ways, to the bit,
+    also where the grid spacing (so eps_al) changes in the middle of the contact."""
+    grid = 1e-4
+    base = liggghts_scenes.pair_bounce(0.9, mu=scenes.viscosity_for_stokes(50), grid=grid)
+    steps = int(base.split("\nrun ")[1].split("\n")[0])
+    friction = "fix mf all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3\n"
+    if grid_change:    # the contact starts at step 43 and lasts 8 steps
+        base = base.replace(f"\nrun {steps}\n", f"\nrun 46\nfix m4 all property/global lubricatedGridSpacing "
+                                                 f"scalar {2 * grid}\nrun {steps - 46}\n")
+    results = {}
+    for tangential in ("history", "no_history"):
+        script = base.replace("pair_style gran model lubricated\n",
+                              friction + f"pair_style gran model lubricated tangential {tangential}\n")
+        assert f"tangential {tangential}" in script
+        results[tangential] = run.lig(script + "\n".join(
+            f'print "RESULT {q}{k} $({q}[{k}])"' for k in (1, 2) for q in ("x", "vx")) + "\n")
+    assert 0.0 < results["history"]["e"] < 0.9
+    assert results["history"] == results["no_history"]
