@@ -31,11 +31,11 @@ namespace liggghts {
 // equal to normal_force() within rounding: a contact in overlap now and a step ago (and, by the
 // oscillator, a step ahead), whose film is saturated (no logarithm of the gap); and a pair apart
 // over the whole step, where no contact can act (the film alone). False where they do not
-// apply: normal_force() then.
+// apply: normal_force() then. sustained_contact: for an exact model in a step only (the caller
+// tests that first: lambda_al, lambda(eps_al) of the pair, is only needed there).
 inline bool sustained_contact(const NormalModel &model, double gap, const FilmRadius &radius, double m_e, double u_n,
-                              bool stepping, NormalForce &fn, double lambda_al)
+                              NormalForce &fn, double lambda_al)
 {
-  if (!model.exact || !stepping) return false;
   bool sustained = false;
   fn = sustained_contact_force(model, gap, radius, m_e, u_n, lambda_al, sustained);
   return sustained;

@@ -101,6 +101,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     lambda_offset_ = hsetup->add_history_value("lubricatedEpsAl", "0");
     hsetup->add_history_value("lubricatedLambdaAl", "0");
   }
+
   void beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &)
   {
     if (is_wall_) return;
@@ -173,9 +174,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     if (!update->setupflag && gap - u_n * dt_ >= (neighbor->contactDistanceFactor - 1.0) * sidata.radsum)
       missed_approach(u_n);    // entered from beyond the close range: no step before was seen
     lubricated::NormalForce fn;
-    const bool step = stepping(continued);    // lambda(eps_al) only where sustained_contact uses it
-    if (!(model.exact && step &&
-          lubricated::liggghts::sustained_contact(model, gap, radius, m_e, u_n, step, fn,
+    if (!(model.exact && stepping(continued) &&
+          lubricated::liggghts::sustained_contact(model, gap, radius, m_e, u_n, fn,
                                                   history_lambda(model.lubrication, radius, sidata.contact_history))))
       fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation(continued));
 
@@ -210,9 +210,9 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // Near contact: the film, and the step-exact contact's first and last steps. LIGGGHTS calls
   // this for every pair within its contact distance, which the walls' film sets (reach 0.75 dx
   // of the smallest radius; about five pairs per sphere and step): in a step the pair's are
-  // listed for the vectorised loop, run for every close_piece of them (close_pairs.h). The listing and the test that most pairs fail are
-  // inlined into the pair's pass (GCC left them a call: 3-13 % of an active bed's time), the
-  // rest is a call.
+  // listed for the vectorised loop, run for every close_piece of them (close_pairs.h). The
+  // listing and the test that most pairs fail are inlined into the pair's pass (GCC left them a
+  // call: 3-13 % of an active bed's time), the rest is a call.
   __attribute__((always_inline)) inline void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces,
                                                            ForceData &j_forces)
   {
@@ -279,22 +279,13 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   {
     idle_scale_ = 1.0, idle_offset_ = INFINITY;
     if (step_velocity_->continues()) return;
-    double eps_max = 0.0, reach_max = 0.0;
-    for (const lubricated::NormalModel &m : models_) {
-      const lubricated::Lubrication &film = m.lubrication;
-      if (!film.active()) continue;
-      if (film.grid_spacing > 0.0)
-        reach_max = std::max(reach_max, film.reach(0.0));
-      else
-        eps_max = std::max(eps_max, film.eps_activation);
-    }
     const double *v = atom->v[0];
     const int nall = atom->nlocal + atom->nghost;
     double speed_max = 0.0;
     for (int k = 0; k < nall; k++)
       speed_max = std::max(speed_max, std::fabs(v[3 * k]) + std::fabs(v[3 * k + 1]) + std::fabs(v[3 * k + 2]));
-    idle_scale_ = (1.0 + 0.5 * eps_max) * (1.0 + 1e-9);
-    idle_offset_ = (reach_max + 2.0 * speed_max * dt_) * (1.0 + 1e-9);
+    idle_scale_ = (1.0 + 0.5 * film_eps_max_) * (1.0 + 1e-9);
+    idle_offset_ = (film_reach_max_ + 2.0 * speed_max * dt_) * (1.0 + 1e-9);
   }
 
   // lambda(eps_al) of a contact's film (Lubrication::lambda_activation_for, a logarithm): kept in
@@ -569,6 +560,16 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     dt_ = update->dt;
     models_ = lubricated::liggghts::build_models(coefficients_, ntypes_, is_wall_, dt_, message_);
     if (!message_.empty()) fail(message_);
+    // The films' largest reach for bound_idle_pairs: 0.75 dx with a grid, else eps_al R.
+    film_eps_max_ = film_reach_max_ = 0.0;
+    for (const lubricated::NormalModel &m : models_) {
+      const lubricated::Lubrication &film = m.lubrication;
+      if (!film.active()) continue;
+      if (film.grid_spacing > 0.0)
+        film_reach_max_ = std::max(film_reach_max_, film.reach(0.0));
+      else
+        film_eps_max_ = std::max(film_eps_max_, film.eps_activation);
+    }
     if (budget_ && !is_wall_) {    // a new time step: new network loads
       std::vector<double> normal, bound;
       network_loads(normal, bound);
@@ -603,6 +604,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   double dt_ = -1.0;
   int lambda_offset_ = -1;                              // eps_al, lambda(eps_al) in a pair's contact history (-1: none)
   double idle_scale_ = 1.0, idle_offset_ = INFINITY;    // idle_reach() (pairs; walls: none idle)
+  double film_eps_max_ = 0.0, film_reach_max_ = 0.0;    // the films' largest eps_al, grid reach
   std::vector<lubricated::Coefficients> coefficients_;
   std::vector<lubricated::NormalModel> models_;
 };
