@@ -125,7 +125,6 @@ void ClosePairs::apply(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::PairGran *pair, const 
       if (film_force == 0.0) continue;
       if (record) budget->add_film(a, b, on_i, film_share_of_capacity(film_force, capacity[c], kick));
     }
-    if (flags_[c]) *flags_[c] |= LIGGGHTS::ContactModels::CONTACT_NORMAL_MODEL;
     const double relax_a = pair->relax(a);    // LIGGGHTS's force_update()
     for (int d = 0; d < 3; d++)
       f[3 * a + d] += relax_a * on_i[d];

@@ -69,12 +69,11 @@ struct ClosePairs {
 
   void clear() { count_ = 0; }
   // One test per pair (surfacesClose() lists every close pair of a pass; GCC left it a call).
-  __attribute__((always_inline)) void add(int atom_i, int atom_j, int *flag)
+  __attribute__((always_inline)) void add(int atom_i, int atom_j)
   {
     if (count_ == static_cast<int>(i_.size())) grow();
     i_[count_] = atom_i;
     j_[count_] = atom_j;
-    flags_[count_] = flag;
     count_++;
   }
   int size() const { return count_; }
@@ -84,9 +83,9 @@ struct ClosePairs {
   void evaluate(const CloseAtoms &atoms, const NormalModel &model);
 
   // evaluate(), then each force applied as LIGGGHTS applies a pair's (its relax factor; j's
-  // share where newton_pair or j is owned), the contact flag set where a force acts, and each
-  // film recorded in the film budget (budget: nullptr, none). The few pairs that may touch
-  // within the step take normal_force().
+  // share where newton_pair or j is owned), and each film recorded in the film budget (budget:
+  // nullptr, none); no contact flag is set (a pair apart has no history: surfacesClose). The
+  // few pairs that may touch within the step take normal_force().
   void apply(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::PairGran *pair, const NormalModel &model,
              class FixLubricatedFilmBudget *budget);
 
@@ -96,11 +95,9 @@ struct ClosePairs {
     const size_t size = std::max<size_t>(1024, 2 * i_.size());
     i_.resize(size);
     j_.resize(size);
-    flags_.resize(size);
   }
   int count_ = 0;
   std::vector<int> i_, j_;
-  std::vector<int *> flags_;    // LIGGGHTS's contact flags of the pair (nullptr without history)
 };
 
 }    // namespace liggghts

@@ -207,23 +207,39 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // Both passes thus list the same pairs and apply the same pieces.
   __attribute__((always_inline)) double idle_reach(double radsum) const { return radsum * idle_scale_ + idle_offset_; }
 
+  // surfacesClose()'s first part, from the pair's data alone: true where that is all it does (the
+  // pair is idle, or listed for the close-pair loop), false where it evaluates the pair itself.
+  // The lean pass (pair_pass.h) calls it alone for a close pair without a contact flag, for which
+  // every other model's surfacesClose() does nothing.
+  __attribute__((always_inline)) bool list_close_pair(int i, int j, int itype, int jtype, double rsq, double radsum)
+  {
+    const double idle = idle_reach(radsum);
+    if (!(rsq < idle * idle)) return true;
+    const int t = itype * (ntypes_ + 1) + jtype;
+    if (!(defer_close_ && (t == close_type_ || first_close_type(t)))) return false;
+    close_.add(i, j);
+    if (close_.size() == close_piece) apply_close_pairs();
+    return true;
+  }
+
   // Near contact: the film, and the step-exact contact's first and last steps. LIGGGHTS calls
   // this for every pair within its contact distance, which the walls' film sets (reach 0.75 dx
   // of the smallest radius; about five pairs per sphere and step): in a step the pair's are
   // listed for the vectorised loop, run for every close_piece of them (close_pairs.h). The
   // listing and the test that most pairs fail are inlined into the pair's pass (GCC left them a
   // call: 3-13 % of an active bed's time), the rest is a call.
+  // A pair apart holds no history of this model (lambda(eps_al) is kept for contacts in overlap),
+  // so its flag is cleared, as the tangential model clears its own: LIGGGHTS then keeps no
+  // partner record for a film, and the lean pass takes the pair as one without a flag. A flag
+  // left set by every film made nearly all close pairs of a wet bed flagged (99.7 % on the active
+  // 2000 bed), each re-stored at every neighbour build and visited in full by the pass.
+  // A wall's history is LIGGGHTS's per-atom wall history: its flag is left as LIGGGHTS's models do.
   __attribute__((always_inline)) inline void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces,
                                                            ForceData &j_forces)
   {
-    const double idle = idle_reach(scdata.radsum);
-    if (!(scdata.rsq < idle * idle)) return;
+    if (!is_wall_ && scdata.contact_flags) *scdata.contact_flags &= ~CONTACT_NORMAL_MODEL;
+    if (list_close_pair(scdata.i, scdata.j, scdata.itype, scdata.jtype, scdata.rsq, scdata.radsum)) return;
     const int t = scdata.itype * (ntypes_ + 1) + scdata.jtype;
-    if (defer_close_ && (t == close_type_ || first_close_type(t))) {
-      close_.add(scdata.i, scdata.j, scdata.contact_flags);
-      if (close_.size() == close_piece) apply_close_pairs();
-      return;
-    }
     if (update->dt != dt_) build_models();
     if (!(scdata.rsq > 0.0)) return;
     // Most close pairs are out of the film and a step away from contact: known without the square
@@ -262,7 +278,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     if (!lubricated::liggghts::film_apart(model, gap, radius, m_e, u_n, stepping(continued), fn))
       fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation(continued));
     if (fn.total() == 0.0) return;
-    if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
+    if (is_wall_ && scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;    // pairs: none apart
     apply(fn.total() * (is_wall_ ? scdata.area_ratio : 1.0), en, i_forces, j_forces);
     scdata.has_force_update = true;
     if (fn.lubrication != 0.0 && budget_on_ && budget_->active())

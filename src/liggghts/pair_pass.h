@@ -10,10 +10,11 @@
 // beyond every model's reach and each close pair is only listed (close_pairs.h). This pass
 // skips the pairs beyond the contact distance after their distance alone, and so the pairs
 // without a contact flag beyond the normal model's reach over the step (its film's and both
-// atoms' moves), for which every model's surfacesClose() does nothing; it reads the flat
-// per-atom blocks. Every option the lean pass leaves out (energy or virial tallies, stored or
-// summed contact forces, coupling, multicontact radii, non-spherical particles) makes it call
-// LIGGGHTS's own pass instead.
+// atoms' moves), for which every model's surfacesClose() does nothing, and it lists the other
+// close pairs without a flag for the film loop from their distance and types alone (only the
+// normal model acts on them); it reads the flat per-atom blocks. Every option the lean pass
+// leaves out (energy or virial tallies, stored or summed contact forces, coupling, multicontact
+// radii, non-spherical particles) makes it call LIGGGHTS's own pass instead.
 #pragma once
 
 #include "liggghts/normal_model_lubricated.h"
@@ -153,6 +154,10 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
         const bool flagless = idle_close_pairs && (!flags || flags[jj] == 0);
         const double outer = flagless ? std::min(wide, normal_.idle_reach(radsum)) : wide;
         if (!(rsq < outer * outer)) continue;
+        // A close pair apart without a contact flag: only the normal model acts (idle_close_pairs),
+        // most often by listing it, from its data alone (no pair record to fill).
+        if (flagless && !(rsq < radsum * radsum) && normal_.list_close_pair(i, j, type[i], type[j], rsq, radsum))
+          continue;
         sidata.radj = radj;
         sidata.j = j;
         sidata.delta[0] = delx;

@@ -19,7 +19,12 @@ without their velocities) keeps LIGGGHTS's reset of its tangential history (a pa
 flag is never skipped: without that, the stale history returns with the contact). Both passes list
 the same close pairs (the model lists no idle pair in either), so that the pieces of 1024 close
 pairs are applied at the same points of a pass: on a jittered lattice of 500 spheres with
-contacts, films and idle pairs, the two trajectories are equal to the bit."""
+contacts, films and idle pairs, the two trajectories are equal to the bit.
+
+The model sets no contact flag for a film and clears its own for a pair apart (a film has no
+history), so LIGGGHTS keeps no contact history for a film, and the lean pass lists those pairs as
+pairs without a flag: a pair in the film writes the restart file of a pair far apart (a flag set
+by the film adds its partner record: caught), a pressed contact a larger one."""
 import itertools
 import random
 
@@ -202,3 +207,43 @@ def test_lean_pass_equals_liggghts_pass_to_the_bit_in_pieces(run, nprocs):
 def test_unknown_pass_is_refused(run):
     with pytest.raises(Exception, match="LUBRICATED_LIGGGHTS_PASS = 'fast' \\(expected lean or liggghts\\)"):
         run.lig(chain(steps=10), environment={"LUBRICATED_LIGGGHTS_PASS": "fast"})
+
+
+def one_pair(gap, push):
+    """Two spheres (R = 1 mm) gap apart, closing at 2e-3 m/s and sliding (friction 0.3), wet
+    (film reach 0.75 dx = 7.5e-6 m), pressed together by push [N] each, 40 steps, then a restart
+    file: its size counts the pairs whose contact history LIGGGHTS keeps (a contact flag set)."""
+    radius = 1e-3
+    return HEADER + f"""boundary p p p
+region box block -0.004 0.004 -0.003 0.003 -0.003 0.003 units box
+create_box 2 box
+pair_style gran model lubricated tangential history
+pair_coeff * *
+create_atoms 1 single {-(radius + gap / 2)!r} 0 0 units box
+create_atoms 1 single {radius + gap / 2!r} 0 0 units box
+set atom * diameter {2 * radius} density 8000
+set atom 1 vx 0.001 vy 0.01
+set atom 2 vx -0.001 vy -0.01
+group one id 1
+group two id 2
+{properties(0.9, 1.7e-3, 8, friction=0.3, grid=1e-5)}fix push1 one addforce {push} 0 0
+fix push2 two addforce {-push} 0 0
+{STEPPING}run 40
+write_restart pair.restart
+""" + dump_state(n_atoms=2)
+
+
+def test_a_film_leaves_no_contact_flag(run):
+    """The film acts on a pair apart without a contact flag: LIGGGHTS keeps no contact history for
+    it (a partner record per pair and neighbour build), and the lean pass takes it as a pair
+    without one (pair_pass.h). A pair in the film writes the restart file of a pair far apart; a
+    pressed contact (flags set: its tangential history and the film's lambda) a larger one."""
+    sizes = {}
+    for case, gap, push in (("far", 1e-3, 0.0), ("film", 4e-6, 0.0), ("contact", -8e-7, 0.02)):
+        state = run.lig(one_pair(gap, push), name=f"in.{case}")
+        sizes[case] = (run.dir / "pair.restart").stat().st_size
+        if case == "film":    # still in the film, which slowed the approach (2e-3 m/s without it)
+            assert 0.0 < state["x2"][0] - state["x1"][0] - 2e-3 < 7.5e-6
+            assert state["v1"][0] < 0.999e-3
+    assert sizes["film"] == sizes["far"]
+    assert sizes["contact"] > sizes["far"]
