@@ -207,14 +207,12 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // Both passes thus list the same pairs and apply the same pieces.
   __attribute__((always_inline)) double idle_reach(double radsum) const { return radsum * idle_scale_ + idle_offset_; }
 
-  // surfacesClose()'s first part, from the pair's data alone: true where that is all it does (the
-  // pair is idle, or listed for the close-pair loop), false where it evaluates the pair itself.
-  // The lean pass (pair_pass.h) calls it alone for a close pair without a contact flag, for which
-  // every other model's surfacesClose() does nothing.
-  __attribute__((always_inline)) bool list_close_pair(int i, int j, int itype, int jtype, double rsq, double radsum)
+  // surfacesClose()'s listing of a pair within idle_reach, from the pair's data alone: true where
+  // it is listed for the close-pair loop, false where surfacesClose() evaluates it itself. The
+  // lean pass (pair_pass.h), which has tested idle_reach already, calls it alone for a close pair
+  // without a contact flag, for which every other model's surfacesClose() does nothing.
+  __attribute__((always_inline)) bool list_close_pair(int i, int j, int itype, int jtype)
   {
-    const double idle = idle_reach(radsum);
-    if (!(rsq < idle * idle)) return true;
     const int t = itype * (ntypes_ + 1) + jtype;
     if (!(defer_close_ && (t == close_type_ || first_close_type(t)))) return false;
     close_.add(i, j);
@@ -238,7 +236,8 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
                                                            ForceData &j_forces)
   {
     if (!is_wall_ && scdata.contact_flags) *scdata.contact_flags &= ~CONTACT_NORMAL_MODEL;
-    if (list_close_pair(scdata.i, scdata.j, scdata.itype, scdata.jtype, scdata.rsq, scdata.radsum)) return;
+    const double idle = idle_reach(scdata.radsum);
+    if (!(scdata.rsq < idle * idle) || list_close_pair(scdata.i, scdata.j, scdata.itype, scdata.jtype)) return;
     const int t = scdata.itype * (ntypes_ + 1) + scdata.jtype;
     if (update->dt != dt_) build_models();
     if (!(scdata.rsq > 0.0)) return;

@@ -154,10 +154,10 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
         const bool flagless = idle_close_pairs && (!flags || flags[jj] == 0);
         const double outer = flagless ? std::min(wide, normal_.idle_reach(radsum)) : wide;
         if (!(rsq < outer * outer)) continue;
-        // A close pair apart without a contact flag: only the normal model acts (idle_close_pairs),
-        // most often by listing it, from its data alone (no pair record to fill).
-        if (flagless && !(rsq < radsum * radsum) && normal_.list_close_pair(i, j, type[i], type[j], rsq, radsum))
-          continue;
+        // A close pair apart without a contact flag (within idle_reach: outer above): only the normal
+        // model acts (idle_close_pairs), most often by listing it, from its data alone (no pair
+        // record to fill).
+        if (flagless && !(rsq < radsum * radsum) && normal_.list_close_pair(i, j, type[i], type[j])) continue;
         sidata.radj = radj;
         sidata.j = j;
         sidata.delta[0] = delx;
@@ -221,8 +221,9 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
   // Whether every model but the normal one does nothing in surfacesClose() for a pair without
   // a contact flag: the default surface model, no cohesion, no rolling resistance, and a
   // tangential model that is off or only clears its flag and zeroes its history there (a flag
-  // of 0 means LIGGGHTS's history of the pair is zero: the models set a flag with any history
-  // and clear both together, and a neighbour build restores a history with its flag).
+  // of 0 means the tangential history of the pair is zero: the models set a flag with any history
+  // and clear both together, and a neighbour build restores a history with its flag; the normal
+  // model's lambda(eps_al), keyed by eps_al, holds whatever the flag).
   using Style = typename StyleOf<CM>::type;
   static constexpr bool idle_close_pairs = Style::SURFACE == LIGGGHTS::ContactModels::SURFACE_DEFAULT &&
                                            Style::COHESION == LIGGGHTS::ContactModels::COHESION_OFF &&
