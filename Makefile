@@ -5,7 +5,7 @@ BUILD  := build
 JOBS   ?= 2
 
 .PHONY: all setup setup-liggghts build demo test test-kernel test-lammps test-liggghts bench format format-check \
-        bench-liggghts bench-beds report fluidized-bed settling-sphere rotating-drum liggghts-demo shear-cell \
+        bench-liggghts bench-beds bench-wet-cost report fluidized-bed settling-sphere rotating-drum liggghts-demo shear-cell \
         clean test-versions test-matrix test-openmpi test-pip
 
 all: build
@@ -78,6 +78,11 @@ bench: build
 BEDS_ARGS ?= --liggghts
 bench-beds: setup-liggghts build
 	$(PY) bench/independent_beds.py --out $(BUILD)/bench-beds $(BEDS_ARGS)
+
+# What the wet targets leave for the films on the same beds (2000 and 20000 spheres), against what a
+# film-only pair costs (build/film_arithmetic): bench/RESULTS_WET_COST.md. About 2 min here.
+bench-wet-cost: build
+	$(PY) bench/wet_cost.py --out $(BUILD)/bench-beds
 
 # LIGGGHTS settling bed: model lubricated against model hooke/stiffness (bench/RESULTS_LIGGGHTS.md).
 bench-liggghts: setup-liggghts build

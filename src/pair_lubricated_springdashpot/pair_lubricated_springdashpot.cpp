@@ -45,6 +45,9 @@ PairLubricatedSpringDashpot::PairLubricatedSpringDashpot(LAMMPS *lmp) : Pair(lmp
   single_enable = 1;
   single_extra = 3;    // contact force, lubrication force, normalised gap
   svector = new double[single_extra];
+  // compute pair: the pairs the last evaluation selected and, of those, the film-only ones.
+  nextra = 2;
+  pvector = new double[nextra]();
   finitecutflag = 1;
   restartinfo = 1;
   writedata = 1;
@@ -56,6 +59,7 @@ PairLubricatedSpringDashpot::PairLubricatedSpringDashpot(LAMMPS *lmp) : Pair(lmp
 PairLubricatedSpringDashpot::~PairLubricatedSpringDashpot()
 {
   delete[] svector;
+  delete[] pvector;
   // The history fix goes with the pair style (modify outlives force at shutdown).
   if (history && modify->get_fix_by_id(history_id)) modify->delete_fix(history_id);
   if (allocated) {
@@ -366,6 +370,7 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
     // so adaptive time stepping recomputes them only where dt grows past theirs.
     film_budget_now = films_can_exceed_budget();
   if (film_budget_now) begin_film_budget();
+  selected_pairs = film_only_pairs = 0;
   // A scene pays only for what it uses: one loop per combination.
   if (any_tangential) {
     if (any_wet)
@@ -382,6 +387,8 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
       vectorised ? eval<false, false, true>() : eval<false, false>();
   }
   if (film_budget_now) finish_film_budget();
+  pvector[0] = static_cast<double>(selected_pairs);
+  pvector[1] = static_cast<double>(film_only_pairs);
   if (vflag_fdotr) virial_fdotr_compute();
 }
 

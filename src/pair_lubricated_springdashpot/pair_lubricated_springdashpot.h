@@ -65,6 +65,11 @@ class PairLubricatedSpringDashpot : public Pair {
   std::vector<int> candidate_i, candidate_j, candidate_jj;
   void grow_pair_lists(std::vector<int> &list_i, std::vector<int> &list_j, std::vector<int> *list_jj, int need);
   std::vector<double> step_reach;    // per atom: radius + bound on its move in one step
+  // This evaluation's counts (compute pair, pvector): the pairs pass 1 selected (in contact,
+  // within a step of it, in a film's reach, or holding an elongation) and, of those, the pairs
+  // apart by more than both atoms move in the step, in a film's reach, holding no elongation
+  // (their film alone acts).
+  bigint selected_pairs = 0, film_only_pairs = 0;
   // No tangential parts, exact integration, velocity Verlet (and `vector yes`): pass 1 puts the
   // pairs that cannot touch within the step but are in the film in a list of their own, and
   // vector_pairs.h computes them, the pairs in sustained contact and the other pairs that stay

@@ -69,7 +69,8 @@ void PairLubricatedSpringDashpot::update_step_reach(double **v)
 // film-only: the whole contact forgets it).
 // Whether an entry is kept follows no pattern a branch predictor could learn, hence no branch.
 // SPLIT: entries apart by more than both atoms can move in the step (no contact can start) but
-// in the film's reach go to the film-only list instead. Returns the candidates' count.
+// in the film's reach go to the film-only list instead. Returns the candidates' count; nfilm:
+// the film-only list's (SPLIT), or how many of the candidates would go there (for compute pair).
 // In pieces: from list entry `next` on, stopping before an atom whose entries could take either
 // list past `limit` (each piece goes to pass 2 while its atoms are in the cache, and the lists
 // hold one piece, not the step's pairs); `next` is left at the first atom not selected.
@@ -125,6 +126,8 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
         film_out_i[nfilm_here] = i;
         film_out_j[nfilm_here] = j;
         nfilm_here += (rsq < near * near) & !keep;
+      } else if (WET) {
+        nfilm_here += keep & !(rsq < touch * touch) & !(TANGENTIAL && touched && touched[jj]);
       }
       ncandidate += keep;
     }
@@ -301,6 +304,9 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     int nfilm;
     const int ncandidate = film_reach_uniform ? select_pairs<WET, TANGENTIAL, SPLIT, true>(next, nfilm, limit)
                                               : select_pairs<WET, TANGENTIAL, SPLIT, false>(next, nfilm, limit);
+    selected_pairs += ncandidate + (SPLIT ? nfilm : 0);
+    film_only_pairs += nfilm;
+    if (!SPLIT) nfilm = 0;    // counted only: no film-only list
     if (network_due) check_contact_network(ncandidate);
     if (loop.budget) reserve_records(ncandidate + nfilm);
     if constexpr (SPLIT && !TANGENTIAL) {

@@ -47,7 +47,8 @@ def scene(coefficients, gap):
     summary = "\n".join(
         f"compute {name} one reduce {kind} fx fy fz" for name, kind in (("low", "min"), ("high", "max")))
     report = ('print "RESULT force{s} $(c_low[1]:%.17g) $(c_high[1]:%.17g) $(c_low[2]:%.17g) $(c_high[2]:%.17g) '
-              '$(c_low[3]:%.17g) $(c_high[3]:%.17g) $(count(one))"')
+              '$(c_low[3]:%.17g) $(c_high[3]:%.17g) $(count(one))"\n'
+              'print "RESULT pairs{s} $(c_pairs[1]:%.17g) $(c_pairs[2]:%.17g)"')
     return dense_scenes.HEADER + f"""lattice sc {SPACING!r}
 region box block 0 {nx} 0 {ny} 0 {nz}
 create_box 2 box
@@ -66,7 +67,8 @@ neigh_modify delay 0 every 1 check yes
 fix nve all nve/sphere
 timestep 1e-5
 {summary}
-thermo_style custom step atoms c_low[1] c_high[1]
+compute pairs all pair lubricated/springdashpot
+thermo_style custom step atoms c_low[1] c_high[1] c_pairs[1] c_pairs[2]
 thermo_modify lost error
 run 0
 {report.format(s=0)}
@@ -93,6 +95,13 @@ def test_every_dimer_feels_the_same_force(lmp, case, nprocs):
             assert high - low <= 1e-9 * scale, f"{state}: dimers differ by {(high - low) / scale:.3g}"
         if "friction" in case and gap < 0.0 and state == "force0":
             assert low_y < 0.0, "no friction against the slip"
+    # compute pair: every dimer's pair selected once over the pieces and ranks, and counted as
+    # film-only where the film alone acts (apart by 50 um, the step moves them 1.4 um at most);
+    # the set-up (force0) takes the general loop, the steps (force5) the vectorised lists.
+    dimers = CELLS[0] * CELLS[1] * CELLS[2]
+    film_only = dimers if gap > 0.0 else 0
+    for state in ("pairs0", "pairs5"):
+        assert result[state] == [dimers, film_only], f"{state}: selected, film-only"
 
 
 @pytest.mark.parametrize("nprocs", [1, 2])
