@@ -30,19 +30,18 @@ __attribute__((always_inline)) inline void split_for_log(double x, double &k, do
   std::memcpy(&m, &m_bits, sizeof m);
 }
 
-// k ln 2 + 2 atanh(s), s = (m - 1) / (m + 1), |s| < 0.1716: atanh by its odd series to s^21
-// (the next term is below 1e-18 of the sum).
+// k ln 2 + 2 atanh(s), s = (m - 1) / (m + 1), |s| < 0.1716: atanh(s) / s = 1 + z / 3 + z^2 / 5 + ...
+// (z = s^2 < 0.02944) by its minimax polynomial of degree 7 in z on that range (Remez, relative
+// error 1.2e-18; the Taylor series needs degree 10 for as much: three multiply-adds more).
 __attribute__((always_inline)) inline double log_of_split(double k, double s)
 {
   const double z = s * s;
   const double series =
-      1.0 +
-      z * (1.0 / 3 +
-           z * (1.0 / 5 +
-                z * (1.0 / 7 +
-                     z * (1.0 / 9 +
-                          z * (1.0 / 11 +
-                               z * (1.0 / 13 + z * (1.0 / 15 + z * (1.0 / 17 + z * (1.0 / 19 + z * (1.0 / 21))))))))));
+      1.0 + z * (0.33333333333333826 +
+                 z * (0.19999999999648413 +
+                      z * (0.14285714380882672 +
+                           z * (0.1111109847380934 +
+                                z * (0.09091818559102725 + z * (0.07656196880080782 + z * 0.07405507514872779))))));
   constexpr double ln2_hi = 6.93147180369123816490e-01, ln2_lo = 1.90821492927058770002e-10;
   return k * ln2_hi + (k * ln2_lo + 2.0 * s * series);
 }
