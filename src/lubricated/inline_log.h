@@ -32,17 +32,17 @@ __attribute__((always_inline)) inline void split_for_log(double x, double &k, do
 
 // k ln 2 + 2 atanh(s), s = (m - 1) / (m + 1), |s| < 0.1716: atanh(s) / s = 1 + z / 3 + z^2 / 5 + ...
 // (z = s^2 < 0.02944) by its minimax polynomial of degree 7 in z on that range (Remez, relative
-// error 1.1e-18, tools/log_series_minimax.py; the Taylor series needs degree 10 for as much:
+// error 1.1e-18, tools/series_minimax.py atanh; the Taylor series needs degree 10 for as much:
 // three multiply-adds more).
 __attribute__((always_inline)) inline double log_of_split(double k, double s)
 {
   const double z = s * s;
   const double series =
       1.0 + z * (0.33333333333333826 +
-                 z * (0.19999999999648413 +
-                      z * (0.14285714380882672 +
-                           z * (0.1111109847380934 +
-                                z * (0.09091818559102725 + z * (0.07656196880080782 + z * 0.07405507514872779))))));
+                 z * (0.1999999999964944 +
+                      z * (0.1428571438067352 +
+                           z * (0.11111098494107967 +
+                                z * (0.09091817547819114 + z * (0.07656221863236867 + z * 0.07405265044557953))))));
   constexpr double ln2_hi = 6.93147180369123816490e-01, ln2_lo = 1.90821492927058770002e-10;
   return k * ln2_hi + (k * ln2_lo + 2.0 * s * series);
 }
