@@ -1,5 +1,5 @@
 """The polynomial coefficients of the inline elementary functions (src/lubricated/inline_log.h,
-inline_exp.h): minimax polynomials, relative error, by the Remez exchange algorithm in 60-digit
+inline_exp.h, inline_sincos.h, inline_atan.h): minimax polynomials, relative error, by the Remez exchange algorithm in 60-digit
 arithmetic; prints them rounded to doubles and the largest relative error. Needs mpmath
 (Debian: python3-mpmath).
 
@@ -9,6 +9,10 @@ arithmetic; prints them rounded to doubles and the largest relative error. Needs
          0.1716, the range log_inline's split leaves); degree 7 (log_of_split)
   exp    exp(r) on |r| <= ln 2 / 2 (the range reduce_by_ln2 leaves); degree 11 (exp_inline)
   expm1  (exp(r) - 1) / r on |r| <= ln 2 / 2; degree 11 (one_minus_exp_neg_inline)
+  sin    sin(r) / r in z = r^2 on 0 <= z <= (pi / 4)^2 (sincos_inline's range); degree 6
+  cos    cos(r) in z = r^2 on the same range; degree 7
+  atan   atan(u) / u in z = u^2 on 0 <= z <= tan(pi / 8)^2 (atan2_nonnegative_inline's range);
+         degree 11
 """
 import argparse
 
@@ -30,11 +34,27 @@ def expm1_ratio(r):
     return mp.mpf(1) if r == 0 else mp.expm1(r) / r
 
 
+def in_square(f):
+    """g(z) = f(sqrt(z)) (f even in its argument, f(0) = its limit)."""
+    return lambda z: f(mp.sqrt(z))
+
+
+def sin_ratio(r):
+    return mp.mpf(1) if r == 0 else mp.sin(r) / r
+
+
+def atan_ratio(u):
+    return mp.mpf(1) if u == 0 else mp.atan(u) / u
+
+
 HALF_LN2 = mp.log(2) / 2
 # name -> (function, interval, default degree)
 FUNCTIONS = {"atanh": (atanh_ratio, (mp.mpf(0), ((mp.sqrt(2) - 1) / (mp.sqrt(2) + 1)) ** 2), 7),
              "exp": (mp.exp, (-HALF_LN2, HALF_LN2), 11),
-             "expm1": (expm1_ratio, (-HALF_LN2, HALF_LN2), 11)}
+             "expm1": (expm1_ratio, (-HALF_LN2, HALF_LN2), 11),
+             "sin": (in_square(sin_ratio), (mp.mpf(0), (mp.pi / 4) ** 2), 6),
+             "cos": (in_square(mp.cos), (mp.mpf(0), (mp.pi / 4) ** 2), 7),
+             "atan": (in_square(atan_ratio), (mp.mpf(0), mp.tan(mp.pi / 8) ** 2), 11)}
 
 
 def remez(f, interval, degree, rounds=30):
