@@ -13,8 +13,9 @@ dimer feels the same force at the set-up and after 5 steps: a pair dropped at a 
 would leave its dimer without force (or with the previous step's), a pair taken twice would
 double it (and `compute pair`'s count of the selected pairs, one per dimer, would miss or double
 it too: it is checked exactly, with the film-only pairs). Tolerance: 1e-9 of the force. The
-dimers differ only in where they sit: coordinates up to 0.18 m round the 1e-5 m overlap to about 2e-12 of itself, and 5 steps make that 1e-10. A
-lost or doubled pair changes its dimer's force by 100 %.
+dimers differ only in where they sit: coordinates up to 0.18 m round the 1e-5 m overlap to about
+2e-12 of itself, and 5 steps make that 1e-10. A lost or doubled pair changes its dimer's force by
+100 %.
 """
 import pathlib
 import re
