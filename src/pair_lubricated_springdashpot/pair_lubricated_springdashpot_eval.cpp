@@ -90,7 +90,8 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
   const double reach_all = reach_table[stride + 1];
   // The counts in locals: the reference nfilm, which the lists' stores might alias, would keep
   // its count in memory, a store-to-load chain through every entry.
-  int ncandidate = 0, nfilm_here = 0;
+  // 64-bit: indices without a sign extension per entry.
+  std::ptrdiff_t ncandidate = 0, nfilm_here = 0;
   int ii = next;
   for (; ii < inum; ii++) {
     const int i = ilist[ii];
@@ -111,9 +112,10 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
     int *film_out_i = film_i.data(), *film_out_j = film_j.data();
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      const double delx = xi - x[3 * j];
-      const double dely = yi - x[3 * j + 1];
-      const double delz = zi - x[3 * j + 2];
+      const double *xj = x + 3 * static_cast<std::size_t>(j);
+      const double delx = xi - xj[0];
+      const double dely = yi - xj[1];
+      const double delz = zi - xj[2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double touch = radi_moved + grown[j];
       const double near = touch + (WET ? (UNIFORM_REACH ? reach_all : reach_row[type[j]]) : 0.0);
@@ -133,8 +135,8 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
     }
   }
   next = ii;
-  nfilm = nfilm_here;
-  return ncandidate;
+  nfilm = static_cast<int>(nfilm_here);
+  return static_cast<int>(ncandidate);
 }
 
 // A pair that is not in contact now has no elongation to keep.
