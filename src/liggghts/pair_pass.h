@@ -143,7 +143,8 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
       sidata.radi = radi;
       for (int jj = 0; jj < jnum; jj++) {
         const int j = jlist[jj] & NEIGHMASK;
-        const double delx = xi - x[3 * j], dely = yi - x[3 * j + 1], delz = zi - x[3 * j + 2];
+        const std::size_t j3 = 3 * static_cast<std::size_t>(j);    // no sign extension per entry
+        const double delx = xi - x[j3], dely = yi - x[j3 + 1], delz = zi - x[j3 + 2];
         const double rsq = delx * delx + dely * dely + delz * delz;
         const double radj = radius[j], radsum = radi + radj;
         // Beyond the contact distance LIGGGHTS's pass calls no model: nothing to do. Nor for a
@@ -168,7 +169,7 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
         sidata.contact_flags = flags ? &flags[jj] : nullptr;
         sidata.contact_history = history ? &history[dnum * jj] : nullptr;
         sidata.v_i = v + 3 * i;
-        sidata.v_j = v + 3 * j;
+        sidata.v_j = v + j3;
         sidata.itype = type[i];
         sidata.jtype = type[j];
         i_forces.reset();
@@ -194,7 +195,7 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
             sidata.en[2] = delz * rinv;
           }
           sidata.omega_i = omega + 3 * i;
-          sidata.omega_j = omega + 3 * j;
+          sidata.omega_j = omega + j3;
           model_.surfacesIntersect(sidata, i_forces, j_forces);
           model_.endSurfacesIntersect(sidata, nullptr, i_forces, j_forces);
           sidata.has_force_update = true;
@@ -204,7 +205,7 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
         }
         if (!sidata.has_force_update || !sidata.computeflag) continue;
         add_forces(pg->relax(i), f + 3 * i, torque + 3 * i, i_forces);
-        if (newton_pair || j < nlocal) add_forces(pg->relax(j), f + 3 * j, torque + 3 * j, j_forces);
+        if (newton_pair || j < nlocal) add_forces(pg->relax(j), f + j3, torque + j3, j_forces);
       }
     }
     model_.endPass(sidata, i_forces, j_forces);
