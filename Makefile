@@ -82,6 +82,7 @@ bench-beds: setup-liggghts build
 # What the wet targets leave for the films on the same beds (2000 and 20000 spheres), against what a
 # film-only pair costs (build/film_arithmetic): bench/RESULTS_WET_COST.md. About 2 min here.
 bench-wet-cost: build
+	@cmake --build $(BUILD) --target film_arithmetic -j $(JOBS)
 	$(PY) bench/wet_cost.py --out $(BUILD)/bench-beds
 
 # LIGGGHTS settling bed: model lubricated against model hooke/stiffness (bench/RESULTS_LIGGGHTS.md).

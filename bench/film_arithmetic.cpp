@@ -10,7 +10,8 @@
    No scatter of forces (the pair style's scatter comes on top). Pairs: radii 0.9-1.1 mm,
    2500 kg/m^3, gaps 1-90 um (in the film of grid 1.25e-4 m), relative speeds up to 0.2 m/s
    per component, dt 1.25e-5 s, water (the beds of bench/independent_beds.py). Prints
-   "RESULT name ns" lines, each the best of 5 rounds. Built by CMake (build/film_arithmetic).
+   "RESULT name ns" lines, each the best of 5 rounds. Built by `make bench-wet-cost` (CMake target
+   film_arithmetic, not part of the default build).
 ------------------------------------------------------------------------- */
 
 #include "lubricated/contact.h"

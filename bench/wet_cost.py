@@ -19,8 +19,9 @@ Per wet style, bed and state (medians; ns per particle-step):
   cut         1 - budget / film work: how much of the film work the target asks to remove;
   per pair    film work and budget per film-only pair (all of the film work charged to them);
   arithmetic  the film's arithmetic alone per film-only pair, from build/film_arithmetic
-              (bench/film_arithmetic.cpp: the vectorised loop on arrays read in order), and what
-              the pair style's loop costs with its gathers (and with the shear film, friction).
+              (bench/film_arithmetic.cpp, built by `make bench-wet-cost`: the vectorised loop on
+              arrays read in order), and what the pair style's loop costs with its gathers (and
+              with the shear film, friction).
 Where the budget per pair is below the arithmetic, no arrangement of the loops meets the target
 while the dry style's time stays as it is: the film of each film-only pair has to be evaluated
 every step.
@@ -93,7 +94,8 @@ def counted(work, state, name, steps):
 
 def arithmetic():
     if not TOOL.exists():
-        raise SystemExit(f"{TOOL} is missing: run 'make build' first")
+        raise SystemExit(f"{TOOL} is missing: run 'make bench-wet-cost' (or cmake --build build --target "
+                         "film_arithmetic)")
     out = subprocess.run([str(TOOL)], capture_output=True, text=True, check=True).stdout
     return {m.group(1): float(m.group(2)) for m in re.finditer(r"^RESULT (\S+) ([0-9.eE+-]+)", out, re.M)}
 
