@@ -100,32 +100,48 @@ void ClosePairs::apply(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::PairGran *pair, const 
   const int nlocal = atom->nlocal, newton_pair = lmp->force->newton_pair;
   const bool record = budget && budget->active();
   const double kick = film_kick_time(lmp->update->dt, false, false);
-  for (int c = 0; c < size(); c++) {
-    if (state[c] == close_idle) continue;
+  // The film pairs' forces applied as LIGGGHTS applies a pair's (force_update(): its relax
+  // factor), without a branch per pair (which pairs are idle or general follows no pattern): the
+  // loop's force is zero for the others (close_loop). The general pairs listed for below.
+  const int n = size();
+  if (static_cast<int>(general_.size()) < n) general_.resize(n);
+  int *general = general_.data(), ngeneral = 0;
+  for (int c = 0; c < n; c++) {
     const int a = i_[c], b = j_[c];
-    double on_i[3] = {force_x[c], force_y[c], force_z[c]}, film_force = film[c];
-    if (state[c] == close_general) {    // as surfacesClose() evaluates one pair
-      const double del[3] = {x[a][0] - x[b][0], x[a][1] - x[b][1], x[a][2] - x[b][2]};
-      const double r = std::sqrt(del[0] * del[0] + del[1] * del[1] + del[2] * del[2]), r_inverse = 1.0 / r;
-      const double en[3] = {del[0] * r_inverse, del[1] * r_inverse, del[2] * r_inverse};
-      const double u_n = (v[a][0] - v[b][0]) * en[0] + (v[a][1] - v[b][1]) * en[1] + (v[a][2] - v[b][2]) * en[2];
-      const double m_e = reduced_mass(rmass[a], rmass[b]);
-      const NormalForce fn =
-          normal_force(model, r - (radius[a] + radius[b]), film_radius_pair(radius[a], radius[b]), m_e, u_n);
-      if (fn.total() == 0.0) continue;
-      for (int d = 0; d < 3; d++)
-        on_i[d] = fn.total() * en[d];
-      film_force = fn.lubrication;
-      capacity[c] = film_capacity(m_e, u_n);
-      if (record && film_force != 0.0) {
-        const double film_on_i[3] = {film_force * en[0], film_force * en[1], film_force * en[2]};
-        budget->add_film(a, b, film_on_i, film_share_of_capacity(film_force, capacity[c], kick));
-      }
-    } else {
-      if (film_force == 0.0) continue;
-      if (record) budget->add_film(a, b, on_i, film_share_of_capacity(film_force, capacity[c], kick));
+    const double relax_a = pair->relax(a);
+    f[3 * a] += relax_a * force_x[c], f[3 * a + 1] += relax_a * force_y[c], f[3 * a + 2] += relax_a * force_z[c];
+    if (newton_pair || b < nlocal) {
+      const double relax_b = pair->relax(b);
+      f[3 * b] -= relax_b * force_x[c], f[3 * b + 1] -= relax_b * force_y[c], f[3 * b + 2] -= relax_b * force_z[c];
     }
-    const double relax_a = pair->relax(a);    // LIGGGHTS's force_update()
+    general[ngeneral] = c;
+    ngeneral += state[c] == close_general;
+  }
+  if (record)
+    for (int c = 0; c < n; c++) {
+      if (film[c] == 0.0) continue;    // idle or general (or a film of zero): no record here
+      const double on_i[3] = {force_x[c], force_y[c], force_z[c]};
+      budget->add_film(i_[c], j_[c], on_i, film_share_of_capacity(film[c], capacity[c], kick));
+    }
+  // The few pairs where a contact may start within the step: as surfacesClose() evaluates one.
+  for (int k = 0; k < ngeneral; k++) {
+    const int c = general[k], a = i_[c], b = j_[c];
+    const double del[3] = {x[a][0] - x[b][0], x[a][1] - x[b][1], x[a][2] - x[b][2]};
+    const double r = std::sqrt(del[0] * del[0] + del[1] * del[1] + del[2] * del[2]), r_inverse = 1.0 / r;
+    const double en[3] = {del[0] * r_inverse, del[1] * r_inverse, del[2] * r_inverse};
+    const double u_n = (v[a][0] - v[b][0]) * en[0] + (v[a][1] - v[b][1]) * en[1] + (v[a][2] - v[b][2]) * en[2];
+    const double m_e = reduced_mass(rmass[a], rmass[b]);
+    const NormalForce fn =
+        normal_force(model, r - (radius[a] + radius[b]), film_radius_pair(radius[a], radius[b]), m_e, u_n);
+    if (fn.total() == 0.0) continue;
+    double on_i[3];
+    for (int d = 0; d < 3; d++)
+      on_i[d] = fn.total() * en[d];
+    if (record && fn.lubrication != 0.0) {
+      const double film_on_i[3] = {fn.lubrication * en[0], fn.lubrication * en[1], fn.lubrication * en[2]};
+      budget->add_film(a, b, film_on_i, film_share_of_capacity(fn.lubrication, film_capacity(m_e, u_n), kick));
+    }
+    const double relax_a = pair->relax(a);
     for (int d = 0; d < 3; d++)
       f[3 * a + d] += relax_a * on_i[d];
     if (newton_pair || b < nlocal) {

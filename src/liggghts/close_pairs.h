@@ -98,6 +98,7 @@ struct ClosePairs {
   }
   int count_ = 0;
   std::vector<int> i_, j_;
+  std::vector<int> general_;    // apply(): the places of the general pairs
 };
 
 }    // namespace liggghts
