@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lubricated/polynomial.h"
+
 namespace lubricated {
 
 namespace detail {
@@ -14,17 +16,19 @@ namespace detail {
 // 1.2e-18, tools/series_minimax.py atan; the series needs degree 19), one multiply-add per degree.
 __attribute__((always_inline)) inline double atan_ratio_of_square(double z)
 {
-  return 1.0 +
-         z * (-0.3333333333333313 +
-              z * (0.19999999999942733 +
-                   z * (-0.1428571427941696 +
-                        z * (0.11111110752666387 +
-                             z * (-0.09090897019142409 +
-                                  z * (0.0769204888361344 +
-                                       z * (-0.06662990408013629 +
-                                            z * (0.0584714768303636 +
-                                                 z * (-0.05036270211262671 +
-                                                      z * (0.0379938683666244 + z * -0.01783567200022157))))))))));
+  static constexpr double coefficients[] = {1.0,
+                                            -0.3333333333333313,
+                                            0.19999999999942733,
+                                            -0.1428571427941696,
+                                            0.11111110752666387,
+                                            -0.09090897019142409,
+                                            0.0769204888361344,
+                                            -0.06662990408013629,
+                                            0.0584714768303636,
+                                            -0.05036270211262671,
+                                            0.0379938683666244,
+                                            -0.01783567200022157};
+  return horner(z, coefficients);
 }
 
 }    // namespace detail

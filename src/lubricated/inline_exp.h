@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "lubricated/polynomial.h"
+
 namespace lubricated {
 
 namespace detail {
@@ -17,34 +19,38 @@ namespace detail {
 // tools/series_minimax.py exp), one multiply-add per degree.
 __attribute__((always_inline)) inline double exp_of_reduced(double r)
 {
-  return 1.0 +
-         r * (1.0 +
-              r * (0.5000000000000018 +
-                   r * (0.1666666666666617 +
-                        r * (0.04166666666649277 +
-                             r * (0.00833333333355927 +
-                                  r * (0.0013888888951223987 + r * (0.00019841269432679237 +
-                                                                    r * (2.4801486521427463e-05 +
-                                                                         r * (2.7557622530872255e-06 +
-                                                                              r * (2.7632293279459877e-07 +
-                                                                                   r * 2.4994304884817207e-08))))))))));
+  static constexpr double coefficients[] = {1.0,
+                                            1.0,
+                                            0.5000000000000018,
+                                            0.1666666666666617,
+                                            0.04166666666649277,
+                                            0.00833333333355927,
+                                            0.0013888888951223987,
+                                            0.00019841269432679237,
+                                            2.4801486521427463e-05,
+                                            2.7557622530872255e-06,
+                                            2.7632293279459877e-07,
+                                            2.4994304884817207e-08};
+  return horner(r, coefficients);
 }
 
 // (exp(r) - 1) / r for |r| <= ln 2 / 2: its minimax polynomial of degree 11 (relative error
 // 2.4e-19, tools/series_minimax.py expm1).
 __attribute__((always_inline)) inline double expm1_ratio_of_reduced(double r)
 {
-  return 1.0 +
-         r * (0.5 +
-              r * (0.1666666666666668 +
-                   r * (0.04166666666666649 +
-                        r * (0.0083333333333197 +
-                             r * (0.0013888888888965133 +
-                                  r * (0.00019841269889815148 +
-                                       r * (2.4801587172494723e-05 +
-                                            r * (2.7557241139410014e-06 +
-                                                 r * (2.755739989100927e-07 +
-                                                      r * (2.510996403418814e-08 + r * 2.087675039218933e-09))))))))));
+  static constexpr double coefficients[] = {1.0,
+                                            0.5,
+                                            0.1666666666666668,
+                                            0.04166666666666649,
+                                            0.0083333333333197,
+                                            0.0013888888888965133,
+                                            0.00019841269889815148,
+                                            2.4801587172494723e-05,
+                                            2.7557241139410014e-06,
+                                            2.755739989100927e-07,
+                                            2.510996403418814e-08,
+                                            2.087675039218933e-09};
+  return horner(r, coefficients);
 }
 
 // 2^k for an integral k with k + 1023 in [1, 2046], from the bits of k + 1023 moved into the

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "lubricated/polynomial.h"
+
 namespace lubricated {
 
 namespace detail {
@@ -37,12 +39,15 @@ __attribute__((always_inline)) inline void split_for_log(double x, double &k, do
 __attribute__((always_inline)) inline double log_of_split(double k, double s)
 {
   const double z = s * s;
-  const double series =
-      1.0 + z * (0.33333333333333826 +
-                 z * (0.1999999999964944 +
-                      z * (0.1428571438067352 +
-                           z * (0.11111098494107967 +
-                                z * (0.09091817547819114 + z * (0.07656221863236867 + z * 0.07405265044557953))))));
+  static constexpr double coefficients[] = {1.0,
+                                            0.33333333333333826,
+                                            0.1999999999964944,
+                                            0.1428571438067352,
+                                            0.11111098494107967,
+                                            0.09091817547819114,
+                                            0.07656221863236867,
+                                            0.07405265044557953};
+  const double series = horner(z, coefficients);
   constexpr double ln2_hi = 6.93147180369123816490e-01, ln2_lo = 1.90821492927058770002e-10;
   return k * ln2_hi + (k * ln2_lo + 2.0 * s * series);
 }

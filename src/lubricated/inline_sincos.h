@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "lubricated/polynomial.h"
+
 namespace lubricated {
 
 namespace detail {
@@ -14,19 +16,27 @@ namespace detail {
 // (relative error 3.3e-18 and 3.6e-20, tools/series_minimax.py sin, cos), one multiply-add per degree.
 __attribute__((always_inline)) inline double sin_ratio_of_square(double z)
 {
-  return 1.0 + z * (-0.16666666666666616 +
-                    z * (0.008333333333320002 + z * (-0.00019841269828402131 +
-                                                     z * (2.755731329901569e-06 +
-                                                          z * (-2.5050705846484807e-08 + z * 1.589413637832744e-10)))));
+  static constexpr double coefficients[] = {1.0,
+                                            -0.16666666666666616,
+                                            0.008333333333320002,
+                                            -0.00019841269828402131,
+                                            2.755731329901569e-06,
+                                            -2.5050705846484807e-08,
+                                            1.589413637832744e-10};
+  return horner(z, coefficients);
 }
 
 __attribute__((always_inline)) inline double cos_of_square(double z)
 {
-  return 1.0 + z * (-0.5 + z * (0.04166666666666643 +
-                                z * (-0.0013888888888858961 +
-                                     z * (2.4801587282899458e-05 +
-                                          z * (-2.755731286569497e-07 +
-                                               z * (2.0875555145571405e-09 + z * -1.1352123201883281e-11))))));
+  static constexpr double coefficients[] = {1.0,
+                                            -0.5,
+                                            0.04166666666666643,
+                                            -0.0013888888888858961,
+                                            2.4801587282899458e-05,
+                                            -2.755731286569497e-07,
+                                            2.0875555145571405e-09,
+                                            -1.1352123201883281e-11};
+  return horner(z, coefficients);
 }
 
 }    // namespace detail
