@@ -9,7 +9,8 @@ namespace detail {
 
 // c[0] + x (c[1] + x (c[2] + ... + x c[N - 1])): one multiply-add per degree, the nesting
 // written out at compile time (no loop), so that loops calling it stay vectorised.
-template <std::size_t K = 0, std::size_t N> __attribute__((always_inline)) inline double horner(double x, const double (&c)[N])
+template <std::size_t K = 0, std::size_t N>
+__attribute__((always_inline)) inline double horner(double x, const double (&c)[N])
 {
   if constexpr (K + 1 == N)
     return c[K];
