@@ -158,6 +158,7 @@ void FixContactHistory::store_from_list()
 void FixContactHistory::map_to_list()
 {
   if (!list) return;
+  if (before_mapping) before_mapping();
   const tagint *tag = atom->tag;
   offset.assign(atom->nlocal + 1, 0);
   int total = 0;

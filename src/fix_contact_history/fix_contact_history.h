@@ -18,6 +18,7 @@
 
 #include "fix.h"
 
+#include <functional>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -52,6 +53,9 @@ class FixContactHistory : public Fix {
   double memory_usage() override;
 
   void set_list(class NeighList *l) { list = l; }
+  // Called after each build, before the history is laid onto the new list's entries: the pair
+  // style trims its list there (pair_lubricated_springdashpot_list.cpp).
+  std::function<void()> before_mapping;
   // History of list entry jj of atom i: touched flag and nvalue doubles, in i's frame.
   char *touched(int i) { return touch.data() + offset[i]; }
   double *values(int i) { return value.data() + offset[i] * nvalue; }

@@ -91,32 +91,33 @@ void PairLubricatedSpringDashpot::settings(int narg, char **arg)
   require_supported_units(lmp, STYLE);
   vector_enabled = true;
   limit_per_atom = true;
+  trim_enabled = true;
   for (int iarg = 0; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
-    if (key != "vector" && key != "limit")
+    if (key != "vector" && key != "limit" && key != "trim")
       error->all(FLERR,
-                 "{}: unknown keyword '{}' (allowed: vector yes|no, limit atom|pair; "
+                 "{}: unknown keyword '{}' (allowed: vector yes|no, limit atom|pair, trim yes|no; "
                  "coefficients go in pair_coeff)",
                  STYLE, key);
-    const char *allowed = key == "vector" ? "yes or no" : "atom or pair";
+    const char *allowed = key == "limit" ? "atom or pair" : "yes or no";
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value ({})", STYLE, key, allowed);
     const std::string value = arg[iarg + 1];
-    if (key == "vector") {
-      if (value != "yes" && value != "no")
-        error->all(FLERR, "{}: vector = {} is not allowed (yes or no)", STYLE, value);
-      vector_enabled = value == "yes";
-    } else {
+    if (key == "limit") {
       if (value != "atom" && value != "pair")
         error->all(FLERR, "{}: limit = {} is not allowed (atom or pair)", STYLE, value);
       limit_per_atom = value == "atom";
+      continue;
     }
+    if (value != "yes" && value != "no") error->all(FLERR, "{}: {} = {} is not allowed (yes or no)", STYLE, key, value);
+    (key == "vector" ? vector_enabled : trim_enabled) = value == "yes";
   }
 }
 
-// One int: bit 0 vector no, bit 1 limit pair (files written before `limit` read as atom).
+// One int: bit 0 vector yes, bit 1 limit pair, bit 2 trim no (files written before `limit` or
+// `trim` read as atom and yes).
 void PairLubricatedSpringDashpot::write_restart_settings(FILE *fp)
 {
-  const int flag = (vector_enabled ? 1 : 0) | (limit_per_atom ? 0 : 2);
+  const int flag = (vector_enabled ? 1 : 0) | (limit_per_atom ? 0 : 2) | (trim_enabled ? 0 : 4);
   fwrite(&flag, sizeof(int), 1, fp);
 }
 
@@ -127,6 +128,7 @@ void PairLubricatedSpringDashpot::read_restart_settings(FILE *fp)
   MPI_Bcast(&flag, 1, MPI_INT, 0, world);
   vector_enabled = (flag & 1) != 0;
   limit_per_atom = (flag & 2) == 0;
+  trim_enabled = (flag & 4) == 0;
 }
 
 // pair_coeff I J e_d [ncontact N | tcontact t_c] [viscosity mu_f] [activation eps_al | grid dx]
@@ -200,6 +202,8 @@ void PairLubricatedSpringDashpot::init_style()
     // called again while the requests are unchanged) and is the one the history follows.
     if (list) history->set_list(list);
   }
+  // With a history the list is trimmed before the history is laid onto its entries.
+  if (history) history->before_mapping = [this]() { trim_list_to_reach(); };
   if (!any_friction && history) {
     modify->delete_fix(history_id);
     history = nullptr;
@@ -359,6 +363,7 @@ void PairLubricatedSpringDashpot::reset_dt()
 void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  trim_list_if_built();
   // A set-up that continues the last run evaluates as its last step did (fix_step_velocity.h);
   // not with rigid bodies or immovable atoms, whose velocities the reconstruction does not know.
   continued = step_velocity && step_velocity->continues() && !inverse_mass_on;

@@ -13,7 +13,7 @@
 #include "lubricated/contact.h"
 
 #include <string>
-
+#include <utility>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -159,6 +159,13 @@ class PairLubricatedSpringDashpot : public Pair {
   // vectorised vector_forces() with evaluate_pair() for the rest).
   template <bool WET, bool TANGENTIAL, bool SPLIT = false> void eval();
   void update_step_reach(double **v);
+  // The wet list trimmed in place after each build to the pairs a film can reach before the
+  // next (pair_lubricated_springdashpot_list.cpp); `trim no` keeps it as LAMMPS built it.
+  bool trim_enabled = true;
+  std::pair<bigint, bigint> trimmed_build{-1, -1};    // the build trimmed last (lastcall, ncalls)
+  bool list_can_be_trimmed() const;
+  void trim_list_to_reach();
+  void trim_list_if_built();
   template <bool WET, bool TANGENTIAL, bool SPLIT, bool UNIFORM_REACH>
   int select_pairs(int &next, int &nfilm, int limit);
   static constexpr int pairs_per_piece = 4096;    // pass 1's pieces (16 chunks of vector_forces)
