@@ -6,7 +6,9 @@ reach before the next build (each atom stays within skin / 2 of where the build 
 The beds: the random polydisperse packings of tests/lammps/test_dense_packings.py (300 spheres,
 radii log-uniform 0.1-1 mm, 1:10, periodic), where the per-type cutoff lists each small sphere's
 every neighbour within 2 mm: *loose61* (solid fraction 0.61, the films) and *preloaded* (0.70,
-sustained contacts, with friction: their elongations must follow the trimmed list across builds),
+sustained contacts, with friction: their elongations must follow the trimmed list across builds;
+with rolling resistance they take the general loop), loose61 also with a grid (one reach for
+all) and with two types (half the spheres each: wet pairs of unlike reach, dry pairs between),
 random velocities of rms 0.3 m/s (from a hash of the atom ID: the same on any number of ranks) so
 that the skin of 0.02 mm is crossed every few tens of steps, e_d = 0.9, N_c = 8, mu_f = 1e-3 Pa s,
 eps_al = 0.1 (reach 0.05 mm for the largest pair), dt = 1e-6 s, 400 steps.
@@ -26,8 +28,20 @@ import dense_scenes
 SKIN = 2.0e-5
 STEPS = 400
 HASH = "(v_h{k}-floor(v_h{k}))"
+MIXED = "mixed"
+MIXED_TYPES = """group odd id 1:300:2
+set group odd type 2
+pair_coeff 1 1 0.9 ncontact 8 viscosity 1e-3 activation 0.1
+pair_coeff 2 2 0.8 ncontact 8 viscosity 1e-3 activation 0.05
+pair_coeff 1 2 0.9 ncontact 8
+"""
 CASES = {
     "loose61 wet": ("loose61", "viscosity 1e-3 activation 0.1"),
+    # a grid: one reach for every pair (0.75 dx, eps_al <= 1 for the two smallest spheres)
+    "loose61 wet grid": ("loose61", "viscosity 1e-3 grid 5e-5"),
+    # two types, half the spheres each: wet pairs of unlike reach and dry pairs between them
+    # (their entries trimmed to r_i + r_j + skin)
+    "loose61 mixed": ("loose61", MIXED),
     "preloaded wet friction": ("preloaded", "viscosity 1e-3 activation 0.1 friction 0.3"),
     # rolling resistance: the frictional contacts through the general loop (not vectorised)
     "preloaded wet friction rolling": ("preloaded", "viscosity 1e-3 activation 0.1 friction 0.3 rolling 0.1"),
@@ -40,14 +54,15 @@ def scene(packing, coefficients, trim, extra=""):
     u = [HASH.format(k=k) for k in range(3)]
     sample = "".join(f'print "RESULT s{k} $(x[{k}]:%.17g) $(y[{k}]:%.17g) $(z[{k}]:%.17g) $(vx[{k}]:%.17g) '
                      f'$(vy[{k}]:%.17g) $(vz[{k}]:%.17g) $(v_wx[{k}]:%.17g)"\n' for k in range(1, 301, 23))
-    return dp.HEADER.format(boundary="p p p", data=dp.pinned(DATA[packing])) + f"""{hashes}
+    data = f"{dp.pinned(DATA[packing])} extra/atom/types 1" if coefficients == MIXED else dp.pinned(DATA[packing])
+    pair_coeff = MIXED_TYPES if coefficients == MIXED else f"pair_coeff * * 0.9 ncontact 8 {coefficients}\n"
+    return dp.HEADER.format(boundary="p p p", data=data) + f"""{hashes}
 variable vx atom 0.3*(2*{u[0]}-1)
 variable vy atom 0.3*(2*{u[1]}-1)
 variable vz atom 0.3*(2*{u[2]}-1)
 velocity all set v_vx v_vy v_vz units box
 pair_style lubricated/springdashpot trim {trim}
-pair_coeff * * 0.9 ncontact 8 {coefficients}
-neighbor {SKIN!r} bin
+{pair_coeff}neighbor {SKIN!r} bin
 neigh_modify delay 0 every 1 check yes
 fix nve all nve/sphere
 timestep 1e-6
