@@ -162,6 +162,10 @@ class PairLubricatedSpringDashpot : public Pair {
   // The wet list trimmed in place after each build to the pairs a film can reach before the
   // next (pair_lubricated_springdashpot_list.cpp); `trim no` keeps it as LAMMPS built it.
   bool trim_enabled = true;
+  // The centre distance within which a pair of atoms i, j can act before the next build: the
+  // radii, the types' largest film reach (max_reach) and the skin (each atom moves at most half
+  // of it until then). The trim's bound and the film budget's ceiling.
+  double reach_until_next_build(int i, int j, double skin) const;
   std::pair<bigint, bigint> trimmed_build{-1, -1};    // the build trimmed last (lastcall, ncalls)
   bool list_can_be_trimmed() const;
   void trim_list_to_reach();

@@ -99,7 +99,7 @@ bool PairLubricatedSpringDashpot::films_can_exceed_budget()
     }
   // The ceiling for every pair the types' largest film reach (max_reach) plus the skin allows.
   const bool ceiling_can_exceed = can_exceed([&](int i, int j, double rsq) {
-    const double reach = radius[i] + radius[j] + max_reach[index(type[i], type[j])] + skin;
+    const double reach = reach_until_next_build(i, j, skin);
     return rsq < reach * reach ? ceiling : 0.0;
   });
   if (!ceiling_can_exceed) return false;

@@ -15,12 +15,18 @@ using namespace LAMMPS_NS;
 // list would lose film pairs, init_style): in a polydisperse bed most of its extra entries are
 // pairs of smaller spheres that no film can reach before the next build. Until then each atom
 // stays within skin / 2 of where the build found it (LAMMPS rebuilds before it moves farther),
-// so a pair can close its distance by at most the skin: only entries with
-// r < r_i + r_j + reach + skin (reach: the types' largest, max_reach, as pass 1 uses) can act
-// before the next build, and the others are dropped in place, as LAMMPS's radius-based lists
+// so a pair can close its distance by at most the skin: only entries within
+// reach_until_next_build (r_i + r_j + the types' largest film reach, as pass 1 uses, + skin) can
+// act before the next build, and the others are dropped in place, as LAMMPS's radius-based lists
 // never hold them. The same bound as the film budget's (films_can_exceed_budget).
 // Not where another list shares this one's arrays (a copy: a compute or fix asking for the same
 // list) or this one is a copy or trimmed from another (its arrays may be the parent's).
+double PairLubricatedSpringDashpot::reach_until_next_build(int i, int j, double skin) const
+{
+  const double *radius = atom->radius;
+  return radius[i] + radius[j] + max_reach[index(atom->type[i], atom->type[j])] + skin;
+}
+
 bool PairLubricatedSpringDashpot::list_can_be_trimmed() const
 {
   if (!list || list->listcopy) return false;
@@ -33,16 +39,13 @@ void PairLubricatedSpringDashpot::trim_list_to_reach()
 {
   trimmed_build = {neighbor->lastcall, neighbor->ncalls};
   if (!trim_enabled || !any_wet || !list_can_be_trimmed()) return;
-  const double *x = atom->x[0], *radius = atom->radius;
-  const int *type = atom->type;
+  const double *x = atom->x[0];
   const double skin = neighbor->skin;
-  const int stride = ntypes_alloc + 1;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     int *jlist = list->firstneigh[i];
     const int jnum = list->numneigh[i];
-    const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2], radi = radius[i] + skin;
-    const double *reach_row = max_reach.data() + type[i] * stride;
+    const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
     int kept = 0;
     // Branch-free (which entries stay follows no pattern): each entry written at the next free
     // place, which moves on where it stays.
@@ -50,7 +53,7 @@ void PairLubricatedSpringDashpot::trim_list_to_reach()
       const int entry = jlist[jj];
       const int j = entry & NEIGHMASK;
       const double delx = xi - x[3 * j], dely = yi - x[3 * j + 1], delz = zi - x[3 * j + 2];
-      const double outer = radi + radius[j] + reach_row[type[j]];
+      const double outer = reach_until_next_build(i, j, skin);
       jlist[kept] = entry;
       kept += delx * delx + dely * dely + delz * delz < outer * outer;
     }
