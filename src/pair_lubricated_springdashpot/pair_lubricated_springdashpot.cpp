@@ -83,9 +83,11 @@ void PairLubricatedSpringDashpot::allocate()
   network_load.assign((n + 1) * (n + 1), 0.0);
   network_bound.assign((n + 1) * (n + 1), 0.0);
   maxrad.assign(n + 1, 0.0);
+  cutoff_given.assign((n + 1) * (n + 1), 0.0);
+  list_cutoff.assign((n + 1) * (n + 1), 0.0);
 }
 
-// pair_style lubricated/springdashpot [vector yes|no] [limit atom|pair]
+// pair_style lubricated/springdashpot [vector yes|no] [limit atom|pair] [trim yes|no]
 void PairLubricatedSpringDashpot::settings(int narg, char **arg)
 {
   require_supported_units(lmp, STYLE);
@@ -113,11 +115,13 @@ void PairLubricatedSpringDashpot::settings(int narg, char **arg)
   }
 }
 
-// One int: bit 0 vector yes, bit 1 limit pair, bit 2 trim no (files written before `limit` or
-// `trim` read as atom and yes).
+// One int: bit 0 vector yes, bit 1 limit pair, bit 2 trim no, bit 3 a cutoff follows each type
+// pair's coefficients (files written before `limit`, `trim` or `cutoff` read as atom, yes and
+// cutoffs from the radii).
 void PairLubricatedSpringDashpot::write_restart_settings(FILE *fp)
 {
-  const int flag = (vector_enabled ? 1 : 0) | (limit_per_atom ? 0 : 2) | (trim_enabled ? 0 : 4);
+  const int flag =
+      (vector_enabled ? 1 : 0) | (limit_per_atom ? 0 : 2) | (trim_enabled ? 0 : 4) | (any_cutoff_given() ? 8 : 0);
   fwrite(&flag, sizeof(int), 1, fp);
 }
 
@@ -129,9 +133,15 @@ void PairLubricatedSpringDashpot::read_restart_settings(FILE *fp)
   vector_enabled = (flag & 1) != 0;
   limit_per_atom = (flag & 2) == 0;
   trim_enabled = (flag & 4) == 0;
+  restart_cutoffs = (flag & 8) != 0;
 }
 
-// pair_coeff I J e_d [ncontact N | tcontact t_c] [viscosity mu_f] [activation eps_al | grid dx]
+bool PairLubricatedSpringDashpot::any_cutoff_given() const
+{
+  return std::any_of(cutoff_given.begin(), cutoff_given.end(), [](double c) { return c > 0.0; });
+}
+
+// pair_coeff I J e_d [ncontact N | tcontact t_c] [viscosity mu_f] [activation eps_al | grid dx] [cutoff r_c]
 //                    [saturation eps_1] [release eps_2]
 void PairLubricatedSpringDashpot::coeff(int narg, char **arg)
 {
@@ -143,8 +153,27 @@ void PairLubricatedSpringDashpot::coeff(int narg, char **arg)
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
 
   std::vector<std::string> words(arg + 2, arg + narg);
+  // cutoff: the pair style's own keyword (the list's, as pair_style granular's); the rest is the
+  // model's, shared with the walls.
+  double cutoff = 0.0;
+  std::size_t k = 1;    // keywords at 1, 3, ... (each takes one value)
+  while (k < words.size()) {
+    if (words[k] != "cutoff") {
+      k += 2;
+      continue;
+    }
+    if (k + 1 >= words.size())
+      error->all(FLERR, "{} pair_coeff {} {}: missing value for keyword cutoff", STYLE, arg[0], arg[1]);
+    char *end = nullptr;
+    cutoff = std::strtod(words[k + 1].c_str(), &end);
+    if (words[k + 1].empty() || *end != '\0' || !std::isfinite(cutoff) || !(cutoff > 0.0))
+      error->all(FLERR, "{} pair_coeff {} {}: cutoff = {} is not allowed (a distance > 0)", STYLE, arg[0], arg[1],
+                 words[k + 1]);
+    words.erase(words.begin() + k, words.begin() + k + 2);
+  }
   lub::Coefficients c;
-  const std::string problem = lub::parse_coefficients(words, 0, c);
+  std::string problem = lub::parse_coefficients(words, 0, c);
+  if (problem.rfind("unknown keyword", 0) == 0) problem += "; pair_coeff also takes cutoff";
   if (!problem.empty()) error->all(FLERR, "{} pair_coeff {} {}: {}", STYLE, arg[0], arg[1], problem);
 
   int count = 0;
@@ -152,6 +181,7 @@ void PairLubricatedSpringDashpot::coeff(int narg, char **arg)
     for (int j = MAX(jlo, i); j <= jhi; j++) {
       coeffs[index(i, j)] = c;
       coeffs[index(j, i)] = c;
+      cutoff_given[index(i, j)] = cutoff_given[index(j, i)] = cutoff;
       setflag[i][j] = 1;
       count++;
     }
@@ -317,12 +347,20 @@ double PairLubricatedSpringDashpot::init_one(int i, int j)
     if (!check.tangential.empty()) utils::logmesg(lmp, "{} types {} {}: {}\n", STYLE, i, j, check.tangential);
   }
 
-  // The film of the largest pair of these types reaches farthest.
-  double reach = 0.0;
-  if (c.wet() && maxrad[i] > 0.0 && maxrad[j] > 0.0)
-    reach = models[index(i, j)].normal.reach(lub::film_radius_pair(maxrad[i], maxrad[j]).value);
+  const double reach = largest_film_reach(i, j);
   max_reach[index(i, j)] = max_reach[index(j, i)] = reach;
-  return maxrad[i] + maxrad[j] + reach;
+  // pair_coeff cutoff replaces the one from the radii (follow_radii checks it covers them).
+  const double given = cutoff_given[index(i, j)];
+  const double cutoff = given > 0.0 ? given : maxrad[i] + maxrad[j] + reach;
+  list_cutoff[index(i, j)] = list_cutoff[index(j, i)] = cutoff;
+  return cutoff;
+}
+
+// The film of the largest pair of types i, j (maxrad) reaches farthest; 0 for a dry pair.
+double PairLubricatedSpringDashpot::largest_film_reach(int i, int j) const
+{
+  if (!coeffs[index(i, j)].wet() || maxrad[i] <= 0.0 || maxrad[j] <= 0.0) return 0.0;
+  return models[index(i, j)].normal.reach(lub::film_radius_pair(maxrad[i], maxrad[j]).value);
 }
 
 void PairLubricatedSpringDashpot::update_models()
@@ -437,6 +475,7 @@ void PairLubricatedSpringDashpot::write_restart(FILE *fp)
       if (!setflag[i][j]) continue;
       coeffs[index(i, j)].pack(buf);
       fwrite(buf, sizeof(double), lub::Coefficients::packed_size, fp);
+      if (any_cutoff_given()) fwrite(&cutoff_given[index(i, j)], sizeof(double), 1, fp);
     }
 }
 
@@ -455,6 +494,11 @@ void PairLubricatedSpringDashpot::read_restart(FILE *fp)
       MPI_Bcast(buf, lub::Coefficients::packed_size, MPI_DOUBLE, 0, world);
       coeffs[index(i, j)].unpack(buf);
       coeffs[index(j, i)].unpack(buf);
+      if (!restart_cutoffs) continue;
+      double cutoff = 0.0;
+      if (me == 0) utils::sfread(FLERR, &cutoff, sizeof(double), 1, fp, nullptr, error);
+      MPI_Bcast(&cutoff, 1, MPI_DOUBLE, 0, world);
+      cutoff_given[index(i, j)] = cutoff_given[index(j, i)] = cutoff;
     }
 }
 

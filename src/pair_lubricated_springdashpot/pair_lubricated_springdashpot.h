@@ -51,8 +51,10 @@ class PairLubricatedSpringDashpot : public Pair {
  protected:
   std::vector<lubricated::Coefficients> coeffs;    // per type pair, (ntypes+1)^2
   std::vector<lubricated::ContactModel> models;    // derived from coeffs and dt
-  std::vector<double> maxrad;                      // largest radius per type
+  std::vector<double> maxrad;                      // largest radius per type (this run's so far)
   std::vector<double> max_reach;                   // farthest film gap per type pair
+  std::vector<double> cutoff_given;                // pair_coeff cutoff per type pair (0: from the radii)
+  std::vector<double> list_cutoff;                 // the cutoff of this run per type pair (init_one)
   bool film_reach_uniform = true;                  // one max_reach for all (eval sets it)
   bool any_wet = false;
   bool any_tangential = false;                   // friction, rolling or shear film on some type pair
@@ -170,6 +172,12 @@ class PairLubricatedSpringDashpot : public Pair {
   bool list_can_be_trimmed() const;
   void trim_list_to_reach();
   void trim_list_if_built();
+  // At each build, before the trim: the radii as they are now (fix adapt may grow them during a
+  // run) in maxrad and max_reach, and an error where this run's cutoffs no longer cover them.
+  void follow_radii();
+  double largest_film_reach(int i, int j) const;
+  bool any_cutoff_given() const;
+  bool restart_cutoffs = false;    // read_restart: the file holds a cutoff per type pair
   template <bool WET, bool TANGENTIAL, bool SPLIT, bool UNIFORM_REACH>
   int select_pairs(int &next, int &nfilm, int limit);
   static constexpr int pairs_per_piece = 4096;    // pass 1's pieces (16 chunks of vector_forces)

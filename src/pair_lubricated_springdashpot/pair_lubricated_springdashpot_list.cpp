@@ -6,10 +6,16 @@
 #include "pair_lubricated_springdashpot.h"
 
 #include "atom.h"
+#include "error.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 
+#include <algorithm>
+#include <vector>
+
 using namespace LAMMPS_NS;
+
+static constexpr const char *STYLE = "Pair style lubricated/springdashpot";
 
 // A wet model's list has per-type cutoffs (2 R_max + the film's reach + skin; a radius-based
 // list would lose film pairs, init_style): in a polydisperse bed most of its extra entries are
@@ -38,6 +44,7 @@ bool PairLubricatedSpringDashpot::list_can_be_trimmed() const
 void PairLubricatedSpringDashpot::trim_list_to_reach()
 {
   trimmed_build = {neighbor->lastcall, neighbor->ncalls};
+  follow_radii();
   if (!trim_enabled || !any_wet || !list_can_be_trimmed()) return;
   const double *x = atom->x[0];
   const double skin = neighbor->skin;
@@ -69,4 +76,38 @@ void PairLubricatedSpringDashpot::trim_list_if_built()
   if (history) return;    // trimmed by the history fix's post_neighbor (history->before_mapping)
   if (trimmed_build.first == neighbor->lastcall && trimmed_build.second == neighbor->ncalls) return;
   trim_list_to_reach();
+}
+
+// The cutoffs of a run come from the largest radius of each type at its setup (init_style,
+// init_one), or from pair_coeff cutoff. Radii that grow during the run (fix adapt) can outgrow
+// them: at each build the largest radius of each type now enters maxrad (which never shrinks in
+// a run) and the film's reach (max_reach: pass 1 and the trim use it), and a type pair whose
+// largest contact and film distance now exceeds its cutoff is an error (the list would miss
+// pairs of it; LAMMPS's own radius-based styles miss them silently).
+void PairLubricatedSpringDashpot::follow_radii()
+{
+  const int n = atom->ntypes;
+  std::vector<double> local(n + 1, 0.0), now(n + 1, 0.0);
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  for (int i = 0; i < atom->nlocal; i++)
+    local[type[i]] = std::max(local[type[i]], radius[i]);
+  MPI_Allreduce(local.data(), now.data(), n + 1, MPI_DOUBLE, MPI_MAX, world);
+  for (int t = 1; t <= n; t++)
+    maxrad[t] = std::max(maxrad[t], now[t]);
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++) {
+      if (!setflag[i][j] || maxrad[i] <= 0.0 || maxrad[j] <= 0.0) continue;
+      const double reach = largest_film_reach(i, j);
+      max_reach[index(i, j)] = max_reach[index(j, i)] = reach;
+      const double needed = maxrad[i] + maxrad[j] + reach, cutoff = list_cutoff[index(i, j)];
+      if (needed > cutoff * (1.0 + 1e-12))
+        error->all(FLERR,
+                   "{} types {} {}: spheres of radius {:.8g} and {:.8g} need a cutoff of {:.8g} (contact{}), "
+                   "beyond this run's {:.8g} ({}); where radii grow during a run (fix adapt), set pair_coeff {} {} "
+                   "... cutoff to the largest distance they will need and rebuild the neighbor list every step "
+                   "(neigh_modify delay 0 every 1 check no)",
+                   STYLE, i, j, maxrad[i], maxrad[j], needed, reach > 0.0 ? " and film" : "", cutoff,
+                   cutoff_given[index(i, j)] > 0.0 ? "pair_coeff cutoff" : "from the radii at its setup", i, j);
+    }
 }

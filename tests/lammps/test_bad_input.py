@@ -41,7 +41,16 @@ CASES = {
     "activation_not_dem": (script(fix="fix w all wall/lubrication 0.9 viscosity 1e-3 activation DEM "
                                       "zplane 0.0 NULL"),
                            ["expected a number for keyword activation (or dem)", "'DEM'"]),
-    "unknown_pair_keyword": (script("pair_coeff * * 0.9 viscosty 1e-3"), ["unknown keyword 'viscosty'"]),
+    "unknown_pair_keyword": (script("pair_coeff * * 0.9 viscosty 1e-3"),
+                             ["unknown keyword 'viscosty'", "pair_coeff also takes cutoff"]),
+    "cutoff_zero": (script("pair_coeff * * 0.9 cutoff 0"), ["cutoff = 0 is not allowed", "a distance > 0"]),
+    "cutoff_negative": (script("pair_coeff * * 0.9 cutoff -0.003"), ["cutoff = -0.003 is not allowed"]),
+    "cutoff_not_a_number": (script("pair_coeff * * 0.9 cutoff big"), ["cutoff = big is not allowed"]),
+    "cutoff_missing": (script("pair_coeff * * 0.9 ncontact 8 cutoff"), ["missing value for keyword cutoff"]),
+    # below the contact distance of the spheres present (diameter 2 mm): every pair could be lost
+    "cutoff_below_the_radii": (script("pair_coeff * * 0.9 cutoff 0.0015"),
+                               ["types 1 1: spheres of radius 0.001 and 0.001 need a cutoff of 0.002",
+                                "beyond this run's 0.0015 (pair_coeff cutoff)"]),
     "missing_coefficients": (script("pair_coeff 1 1 0.9"), ["All pair coeffs are not set", "1      2: is not set"]),
     "pair_style_arguments": (script().replace("pair_style lubricated/springdashpot",
                                               "pair_style lubricated/springdashpot 0.9"),
