@@ -83,7 +83,7 @@ void PairLubricatedSpringDashpot::trim_list_if_built()
 // them: at each build the largest radius of each type now enters maxrad (which never shrinks in
 // a run) and the film's reach (max_reach: pass 1 and the trim use it), and a type pair whose
 // largest contact and film distance now exceeds its cutoff is an error (the list would miss
-// pairs of it; LAMMPS's own radius-based styles miss them silently).
+// pairs of it; LAMMPS's own granular styles go on without a warning).
 void PairLubricatedSpringDashpot::follow_radii()
 {
   const int n = atom->ntypes;
