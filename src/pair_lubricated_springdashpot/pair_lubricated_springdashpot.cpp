@@ -241,6 +241,17 @@ void PairLubricatedSpringDashpot::init_style()
   if (comm->me == 0)
     for (const auto &msg : advice)
       if (!msg.empty()) error->warning(FLERR, "{}: {}", STYLE, msg);
+  // Under pair_style hybrid each instance of the style keeps its own film budget, and fix
+  // wall/lubrication joins none where there are several (fix_lubricated_wall.cpp).
+  // (pair_match gives the only instance for any nsub, and each of several for its own.)
+  if (any_wet && comm->me == 0 && utils::strmatch(force->pair_style, "^hybrid") &&
+      force->pair_match("lubricated/springdashpot", 1, 1) != force->pair_match("lubricated/springdashpot", 1, 2))
+    error->warning(FLERR,
+                   "{}: several instances under pair_style hybrid: each keeps the many-body film "
+                   "budget of its own pairs, and fix wall/lubrication joins none, so a sphere with films "
+                   "of two is not held within one budget (limit atom); give every type pair to one "
+                   "instance, whose pair_coeff takes coefficients per type pair",
+                   STYLE);
 
   // Under fix nve/sphere/midpoint forces are evaluated with the extrapolated V~; the step-exact
   // integration needs the velocity over the last step instead, which that fix provides.

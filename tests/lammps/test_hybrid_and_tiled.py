@@ -93,6 +93,24 @@ def test_hybrid_with_a_builtin_style(lmp):
     assert one["final"][0] != pytest.approx(builtin["final"][0], rel=1e-3)
 
 
+SEVERAL = "several instances under pair_style hybrid"
+
+
+def test_several_wet_instances_warn_of_their_separate_budgets(lmp):
+    """Each instance keeps the film budget of its own pairs (and a wall fix joins none): a sphere
+    with films of two instances is not held within one budget. One instance, beside a built-in
+    style, does not warn (test above); two wet instances do."""
+    pair = "hybrid lubricated/springdashpot lubricated/springdashpot"
+    pair_coeff = "\n".join(f"pair_coeff {i} {j} lubricated/springdashpot {k} {WET}"
+                           for i, j, k in ((1, 1, 1), (1, 2, 1), (2, 2, 2)))
+    lmp(script(None, pair=pair, pair_coeff=pair_coeff, types=HALF_TYPE_2))
+    assert SEVERAL in lmp.log
+    lmp(script(None, pair=f"hybrid lubricated/springdashpot {HOOKE}",
+               pair_coeff=f"pair_coeff 1 1 lubricated/springdashpot {WET}\npair_coeff 1 2 gran/hooke/history\n"
+                          "pair_coeff 2 2 gran/hooke/history", types=HALF_TYPE_2))
+    assert SEVERAL not in lmp.log
+
+
 def assert_close(got, want):
     assert got.keys() == want.keys()
     for key in want:
