@@ -31,6 +31,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <string>
 
@@ -528,16 +529,27 @@ double PairLubricatedSpringDashpot::memory_usage()
 }
 
 // write_data: the pair_coeff words of each type pair (Pair Coeffs: i i; PairIJ Coeffs: i <= j),
-// which read_data gives back to coeff() (lubricated::coefficients_words).
+// which read_data gives back to coeff() (lubricated::coefficients_words, and cutoff if given).
+std::string PairLubricatedSpringDashpot::pair_coeff_words(int i, int j) const
+{
+  std::string words = lub::coefficients_words(coeffs[index(i, j)]);
+  if (cutoff_given[index(i, j)] > 0.0) {
+    char cutoff[40];
+    std::snprintf(cutoff, sizeof cutoff, " cutoff %.17g", cutoff_given[index(i, j)]);
+    words += cutoff;
+  }
+  return words;
+}
+
 void PairLubricatedSpringDashpot::write_data(FILE *fp)
 {
   for (int i = 1; i <= atom->ntypes; i++)
-    fprintf(fp, "%d %s\n", i, lub::coefficients_words(coeffs[index(i, i)]).c_str());
+    fprintf(fp, "%d %s\n", i, pair_coeff_words(i, i).c_str());
 }
 
 void PairLubricatedSpringDashpot::write_data_all(FILE *fp)
 {
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
-      fprintf(fp, "%d %d %s\n", i, j, lub::coefficients_words(coeffs[index(i, j)]).c_str());
+      fprintf(fp, "%d %d %s\n", i, j, pair_coeff_words(i, j).c_str());
 }

@@ -177,7 +177,8 @@ class PairLubricatedSpringDashpot : public Pair {
   void follow_radii();
   double largest_film_reach(int i, int j) const;
   bool any_cutoff_given() const;
-  bool restart_cutoffs = false;    // read_restart: the file holds a cutoff per type pair
+  std::string pair_coeff_words(int i, int j) const;    // write_data's words for type pair i j
+  bool restart_cutoffs = false;                        // read_restart: the file holds a cutoff per type pair
   template <bool WET, bool TANGENTIAL, bool SPLIT, bool UNIFORM_REACH>
   int select_pairs(int &next, int &nfilm, int limit);
   static constexpr int pairs_per_piece = 4096;    // pass 1's pieces (16 chunks of vector_forces)

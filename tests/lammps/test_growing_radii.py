@@ -117,3 +117,32 @@ print "RESULT pair $(x[1]:%.17g) $(x[2]:%.17g) $(vx[1]:%.17g) $(vx[2]:%.17g) $(v
 print "RESULT third $(x[3]:%.17g) $(vx[3]:%.17g)"
 """)
     assert restarted == whole
+
+
+def test_cutoff_survives_write_data(lmp):
+    """write_data writes each type pair's pair_coeff words with its cutoff (PairIJ Coeffs), which
+    read_data gives back: the spheres then grow as in the run that wrote the file."""
+    whole = lmp(scene(CASES["wet grid"] + " cutoff 0.003"))
+    first = scene(CASES["wet grid"] + " cutoff 0.003", steps=0)
+    lmp(first.replace('print "RESULT pair', f'write_data {lmp.dir}/grow.data pair ij\nprint "RESULT pair'))
+    assert "cutoff 0.0030000000000000001" in (lmp.dir / "grow.data").read_text()
+    read = lmp(f"""plugin load ${{plugin}}
+units si
+atom_style sphere 1
+atom_modify map array
+boundary p p p
+comm_modify vel yes
+pair_style lubricated/springdashpot
+read_data {lmp.dir}/grow.data
+group growing id 1 2
+variable d equal 0.002+2e-7*step
+fix grow growing adapt 1 atom diameter v_d
+neighbor 0.0002 bin
+neigh_modify delay 0 every 1 check no
+fix nve all nve/sphere
+timestep 1.25e-05
+run 3000
+print "RESULT pair $(x[1]:%.17g) $(x[2]:%.17g) $(vx[1]:%.17g) $(vx[2]:%.17g) $(vy[1]:%.17g)"
+print "RESULT third $(x[3]:%.17g) $(vx[3]:%.17g)"
+""")
+    assert read == whole
