@@ -85,7 +85,6 @@ void PairLubricatedSpringDashpot::allocate()
   network_bound.assign((n + 1) * (n + 1), 0.0);
   maxrad.assign(n + 1, 0.0);
   cutoff_given.assign((n + 1) * (n + 1), 0.0);
-  list_cutoff.assign((n + 1) * (n + 1), 0.0);
 }
 
 // pair_style lubricated/springdashpot [vector yes|no] [limit atom|pair] [trim yes|no]
@@ -165,9 +164,7 @@ void PairLubricatedSpringDashpot::coeff(int narg, char **arg)
     }
     if (k + 1 >= words.size())
       error->all(FLERR, "{} pair_coeff {} {}: missing value for keyword cutoff", STYLE, arg[0], arg[1]);
-    char *end = nullptr;
-    cutoff = std::strtod(words[k + 1].c_str(), &end);
-    if (words[k + 1].empty() || *end != '\0' || !std::isfinite(cutoff) || !(cutoff > 0.0))
+    if (!lub::detail::to_number(words[k + 1], cutoff) || !(cutoff > 0.0))
       error->all(FLERR, "{} pair_coeff {} {}: cutoff = {} is not allowed (a distance > 0)", STYLE, arg[0], arg[1],
                  words[k + 1]);
     words.erase(words.begin() + k, words.begin() + k + 2);
@@ -363,9 +360,7 @@ double PairLubricatedSpringDashpot::init_one(int i, int j)
   max_reach[index(i, j)] = max_reach[index(j, i)] = reach;
   // pair_coeff cutoff replaces the one from the radii (follow_radii checks it covers them).
   const double given = cutoff_given[index(i, j)];
-  const double cutoff = given > 0.0 ? given : maxrad[i] + maxrad[j] + reach;
-  list_cutoff[index(i, j)] = list_cutoff[index(j, i)] = cutoff;
-  return cutoff;
+  return given > 0.0 ? given : maxrad[i] + maxrad[j] + reach;
 }
 
 // The film of the largest pair of types i, j (maxrad) reaches farthest; 0 for a dry pair.
@@ -481,13 +476,14 @@ void PairLubricatedSpringDashpot::write_restart(FILE *fp)
 {
   write_restart_settings(fp);
   double buf[lub::Coefficients::packed_size];
+  const bool cutoffs = any_cutoff_given();    // as write_restart_settings flags it
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
       if (!setflag[i][j]) continue;
       coeffs[index(i, j)].pack(buf);
       fwrite(buf, sizeof(double), lub::Coefficients::packed_size, fp);
-      if (any_cutoff_given()) fwrite(&cutoff_given[index(i, j)], sizeof(double), 1, fp);
+      if (cutoffs) fwrite(&cutoff_given[index(i, j)], sizeof(double), 1, fp);
     }
 }
 

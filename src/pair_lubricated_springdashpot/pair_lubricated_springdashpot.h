@@ -54,7 +54,6 @@ class PairLubricatedSpringDashpot : public Pair {
   std::vector<double> maxrad;                      // largest radius per type (this run's so far)
   std::vector<double> max_reach;                   // farthest film gap per type pair
   std::vector<double> cutoff_given;                // pair_coeff cutoff per type pair (0: from the radii)
-  std::vector<double> list_cutoff;                 // the cutoff of this run per type pair (init_one)
   bool film_reach_uniform = true;                  // one max_reach for all (eval sets it)
   bool any_wet = false;
   bool any_tangential = false;                   // friction, rolling or shear film on some type pair

@@ -11,6 +11,7 @@
 #include "neighbor.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 using namespace LAMMPS_NS;
@@ -100,7 +101,8 @@ void PairLubricatedSpringDashpot::follow_radii()
       if (!setflag[i][j] || maxrad[i] <= 0.0 || maxrad[j] <= 0.0) continue;
       const double reach = largest_film_reach(i, j);
       max_reach[index(i, j)] = max_reach[index(j, i)] = reach;
-      const double needed = maxrad[i] + maxrad[j] + reach, cutoff = list_cutoff[index(i, j)];
+      // This run's cutoff, as init_one gave it to LAMMPS (Pair::init squares it into cutsq).
+      const double needed = maxrad[i] + maxrad[j] + reach, cutoff = std::sqrt(cutsq[i][j]);
       if (needed > cutoff * (1.0 + 1e-12))
         error->all(FLERR,
                    "{} types {} {}: spheres of radius {:.8g} and {:.8g} need a cutoff of {:.8g} (contact{}), "

@@ -96,16 +96,9 @@ def test_a_cutoff_too_short_for_the_growth_is_an_error(lmp):
     assert errors and "beyond this run's 0.0024 (pair_coeff cutoff)" in errors[0], lmp.log[-1500:]
 
 
-def test_cutoff_survives_a_restart_file(lmp):
-    """The cutoff is written with each type pair's coefficients (restart flag bit 3): a run read
-    from the file lets the spheres grow, as the run that wrote it would."""
-    whole = lmp(scene(CASES["wet grid"] + " cutoff 0.003"))
-    first = scene(CASES["wet grid"] + " cutoff 0.003", steps=0)
-    lmp(first.replace('print "RESULT pair', f'write_restart {lmp.dir}/grow.restart\nprint "RESULT pair'))
-    restarted = lmp(f"""plugin load ${{plugin}}
-read_restart {lmp.dir}/grow.restart
-comm_modify vel yes
-group growing id 1 2
+# The rest of the run of scene() after a file written at step 0 was read back (`load`: the
+# commands that read it).
+GROW_ON = """group growing id 1 2
 variable d equal 0.002+2e-7*step
 fix grow growing adapt 1 atom diameter v_d
 neighbor 0.0002 bin
@@ -115,16 +108,29 @@ timestep 1.25e-05
 run 3000
 print "RESULT pair $(x[1]:%.17g) $(x[2]:%.17g) $(vx[1]:%.17g) $(vx[2]:%.17g) $(vy[1]:%.17g)"
 print "RESULT third $(x[3]:%.17g) $(vx[3]:%.17g)"
-""")
+"""
+
+
+def written_at_start(lmp, command):
+    """The grid case with its cutoff, written by `command` at step 0 (the whole run returned)."""
+    whole = lmp(scene(CASES["wet grid"] + " cutoff 0.003"))
+    first = scene(CASES["wet grid"] + " cutoff 0.003", steps=0)
+    lmp(first.replace('print "RESULT pair', f'{command}\nprint "RESULT pair'))
+    return whole
+
+
+def test_cutoff_survives_a_restart_file(lmp):
+    """The cutoff is written with each type pair's coefficients (restart flag bit 3): a run read
+    from the file lets the spheres grow, as the run that wrote it would."""
+    whole = written_at_start(lmp, f"write_restart {lmp.dir}/grow.restart")
+    restarted = lmp(f"plugin load ${{plugin}}\nread_restart {lmp.dir}/grow.restart\ncomm_modify vel yes\n" + GROW_ON)
     assert restarted == whole
 
 
 def test_cutoff_survives_write_data(lmp):
     """write_data writes each type pair's pair_coeff words with its cutoff (PairIJ Coeffs), which
     read_data gives back: the spheres then grow as in the run that wrote the file."""
-    whole = lmp(scene(CASES["wet grid"] + " cutoff 0.003"))
-    first = scene(CASES["wet grid"] + " cutoff 0.003", steps=0)
-    lmp(first.replace('print "RESULT pair', f'write_data {lmp.dir}/grow.data pair ij\nprint "RESULT pair'))
+    whole = written_at_start(lmp, f"write_data {lmp.dir}/grow.data pair ij")
     assert "cutoff 0.0030000000000000001" in (lmp.dir / "grow.data").read_text()
     read = lmp(f"""plugin load ${{plugin}}
 units si
@@ -134,15 +140,5 @@ boundary p p p
 comm_modify vel yes
 pair_style lubricated/springdashpot
 read_data {lmp.dir}/grow.data
-group growing id 1 2
-variable d equal 0.002+2e-7*step
-fix grow growing adapt 1 atom diameter v_d
-neighbor 0.0002 bin
-neigh_modify delay 0 every 1 check no
-fix nve all nve/sphere
-timestep 1.25e-05
-run 3000
-print "RESULT pair $(x[1]:%.17g) $(x[2]:%.17g) $(vx[1]:%.17g) $(vx[2]:%.17g) $(vy[1]:%.17g)"
-print "RESULT third $(x[3]:%.17g) $(vx[3]:%.17g)"
-""")
+""" + GROW_ON)
     assert read == whole
