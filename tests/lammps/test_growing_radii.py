@@ -16,6 +16,7 @@ pair at every step and compute it the same way: they agree to the bit, on 1 and 
 a film reach left at the setup's radii (eps_al: the film between gaps of 0.119 and 0.1 mm
 missed), no error (the error tests), a restart file without the cutoff.
 """
+import pathlib
 import re
 
 import pytest
@@ -142,3 +143,65 @@ pair_style lubricated/springdashpot
 read_data {lmp.dir}/grow.data
 """ + GROW_ON)
     assert read == whole
+
+
+# A dense bed that grows: the random 1:10 packing of solid fraction 0.61
+# (tests/lammps/dense_packings/p61.data, 300 spheres of radii 0.1-1 mm, periodic), wet (eps_al =
+# 0.1) with friction, random velocities (each component uniform in +-0.1 m/s), every diameter scaled by 1 + 5e-5 step
+# (2 % in 400 steps of 1e-6 s, overlaps growing by up to 20 um: about 900 pairs listed),
+# the list rebuilt every step, cutoff 2.3 mm (2 x 1.02 mm and the film's reach, 0.1 R).
+BED = """plugin load ${{plugin}}
+units si
+atom_style sphere 1
+atom_modify map array
+boundary p p p
+comm_modify vel yes
+read_data {data}
+variable h0 atom sin(id*12.9898)*43758.5453
+variable h1 atom sin(id*13.9898+1)*43758.5453
+variable h2 atom sin(id*14.9898+2)*43758.5453
+variable vx atom 0.1*(2*(v_h0-floor(v_h0))-1)
+variable vy atom 0.1*(2*(v_h1-floor(v_h1))-1)
+variable vz atom 0.1*(2*(v_h2-floor(v_h2))-1)
+velocity all set v_vx v_vy v_vz units box
+variable s equal 1+5e-5*step
+fix grow all adapt 1 atom diameter v_s scale yes
+pair_style lubricated/springdashpot trim {trim}
+pair_coeff * * 0.9 ncontact 8 viscosity 1e-3 activation 0.1 friction 0.3{cutoff}
+neighbor 2e-5 bin
+neigh_modify delay 0 every 1 check no
+fix nve all nve/sphere
+timestep 1e-6
+compute rot all erotate/sphere
+thermo_style custom step atoms ke c_rot pe
+thermo_modify lost error norm no
+thermo 100
+{run}
+print "RESULT final $(ke:%.17g) $(c_rot:%.17g) $(pe:%.17g) $(atoms)"
+print "RESULT some $(x[1]:%.17g) $(vx[77]:%.17g) $(radius[77]:%.17g) $(z[250]:%.17g)"
+"""
+DATA = pathlib.Path(__file__).resolve().parent / "dense_packings" / "p61.data"
+
+
+def bed(trim="yes", cutoff=" cutoff 0.0023", run="run 400"):
+    return BED.format(data=DATA, trim=trim, cutoff=cutoff, run=run)
+
+
+def test_a_growing_dense_bed(lmp):
+    """The bed's pairs as the two spheres' above: the trimmed list keeps every pair the grown
+    radii bring within reach (trim yes = no, to the bit), 2 ranks give the run of 1 (relative
+    1e-8), a run continued with `run N pre no` is the same run to the bit, no atom is lost, and
+    without the cutoff the first build after the largest spheres grew stops it. (A new run's set-up
+    makes fix adapt's `scale yes` start again from the radii then, LAMMPS's rule: runs split
+    otherwise grow differently, whatever the pair style.)"""
+    trimmed = lmp(bed())
+    assert trimmed["final"][3] == 300
+    assert trimmed["some"][2] == pytest.approx(1.02 * 0.5 * 0.001132557351274878, rel=1e-12)    # grown 2 %
+    assert lmp(bed(trim="no")) == trimmed
+    assert lmp(bed(run="run 200\nrun 200 pre no")) == trimmed
+    two = lmp(bed(), nprocs=2)
+    for key in trimmed:
+        assert two[key] == pytest.approx(trimmed[key], rel=1e-8), key
+    lmp(bed(cutoff=""), check=False)
+    errors = [line for line in lmp.log.splitlines() if line.startswith("ERROR")]
+    assert errors and "need a cutoff of" in errors[0], lmp.log[-1500:]
