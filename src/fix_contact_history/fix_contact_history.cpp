@@ -71,14 +71,41 @@ void FixContactHistory::min_post_neighbor()
 {
   map_to_list();
 }
-// Between runs (write_restart, write_data, a changed group) the per-atom records are the truth:
-// they migrate with the atoms that write_restart, write_data or the next set-up move and
-// reorder, while the list and its flat arrays go stale; so nothing is stored from them again
-// until the next set-up has mapped the records onto its new list.
+// Between runs the per-atom records are the truth: they migrate with the atoms that
+// write_restart, write_data, delete_atoms or the next set-up move and reorder, while the list and
+// its flat arrays then go stale. A run with `pre no` (or `run N every M`) has no set-up, and its
+// list and flat arrays go on from the last run's: the pair writes its new history there, which
+// the first store of that run must keep. So the list's atom order is remembered here, and the
+// stores before the next mapping take the flat arrays only while it holds on every rank.
 void FixContactHistory::post_run()
 {
   store_from_list();
-  mapped = false;
+  order_at_run_end = atom_order();
+  check_order = true;
+}
+
+// The tags of the owned and ghost atoms in index order, hashed (FNV-1a): the list's entries mean
+// the same pairs as long as it is unchanged.
+std::uint64_t FixContactHistory::atom_order() const
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  std::uint64_t hash = 1469598103934665603ull;
+  auto mix = [&hash](std::uint64_t word) { hash = (hash ^ word) * 1099511628211ull; };
+  mix(static_cast<std::uint64_t>(nlocal));
+  mix(static_cast<std::uint64_t>(nall));
+  for (int i = 0; i < nall; i++)
+    mix(static_cast<std::uint64_t>(atom->tag[i]));
+  return hash;
+}
+
+// Whether the flat arrays still belong to the atoms as they are now (see post_run), the same
+// answer on every rank (a store communicates).
+bool FixContactHistory::list_still_current()
+{
+  if (!check_order) return true;
+  int changed = atom_order() != order_at_run_end ? 1 : 0, changed_anywhere = 0;
+  MPI_Allreduce(&changed, &changed_anywhere, 1, MPI_INT, MPI_MAX, world);
+  return changed_anywhere == 0;
 }
 
 // Entry of the next partner of atom i, whose room store_from_list reserved (count the cursor).
@@ -108,6 +135,10 @@ double *FixContactHistory::append_record(int i, int count)
 void FixContactHistory::store_from_list()
 {
   if (!mapped || !list) return;
+  if (!list_still_current()) {
+    mapped = false;
+    return;
+  }
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const tagint *tag = atom->tag;
   const bool newton = force->newton_pair != 0;
@@ -188,6 +219,7 @@ void FixContactHistory::map_to_list()
     }
   }
   mapped = true;
+  check_order = false;
 }
 
 int FixContactHistory::pack_record(int i, double *buf) const

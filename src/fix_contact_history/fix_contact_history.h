@@ -18,6 +18,7 @@
 
 #include "fix.h"
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -69,6 +70,11 @@ class FixContactHistory : public Fix {
   int nvalue;
   class NeighList *list = nullptr;
   bool mapped = false;    // the flat arrays hold the current history
+  // After a run: the atoms' order its list was built for, checked until the next mapping.
+  bool check_order = false;
+  std::uint64_t order_at_run_end = 0;
+  std::uint64_t atom_order() const;
+  bool list_still_current();
 
   // Flat arrays aligned with the half list: entry jj of atom i at offset[i] + jj.
   std::vector<int> offset;

@@ -248,8 +248,11 @@ int FixWallLubrication::pack_restart(int i, double *buf)
 }
 
 // This layout (history_size values), or the two-slot one of older restart files.
+// A fix redefined without friction, rolling or shearfilm keeps no history: the file's is dropped
+// (LAMMPS unpacks a restart's per-atom values into any fix of the same ID and style).
 void FixWallLubrication::unpack_restart(int nlocal, int nth)
 {
+  if (!history) return;
   double **extra = atom->extra;
   int m = 0;
   for (int k = 0; k < nth; k++)

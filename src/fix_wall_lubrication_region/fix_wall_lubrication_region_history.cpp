@@ -93,8 +93,10 @@ int FixWallLubricationRegion::pack_restart(int i, double *buf)
   return slots * SLOT + 1;
 }
 
+// As FixWallLubrication's: a fix redefined without a history drops the file's.
 void FixWallLubricationRegion::unpack_restart(int nlocal, int nth)
 {
+  if (!history) return;
   double **extra = atom->extra;
   int m = 0;
   for (int k = 0; k < nth; k++)

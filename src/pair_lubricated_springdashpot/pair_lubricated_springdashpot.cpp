@@ -55,14 +55,21 @@ PairLubricatedSpringDashpot::PairLubricatedSpringDashpot(LAMMPS *lmp) : Pair(lmp
   // The film budget: scales forward, loads reverse (1 value per atom); the contact masses
   // forward (1); the contact-network check: its sums both ways (lub::network_values).
   comm_forward = comm_reverse = lub::network_values;
+  // The contact-history fix's place in the fix list, held from here by a placeholder that the
+  // history replaces at the first run with friction (as LAMMPS's granular styles do): fixes
+  // defined after the pair style that add or remove atoms in pre_exchange (deposit, evaporate)
+  // then run after the history is stored from the list, not before (it read their atoms then).
+  history_id = "LUBRICATED_HISTORY_" + std::to_string(instance_me);
+  modify->add_fix(history_slot_id() + " all DUMMY");
 }
 
 PairLubricatedSpringDashpot::~PairLubricatedSpringDashpot()
 {
   delete[] svector;
   delete[] pvector;
-  // The history fix goes with the pair style (modify outlives force at shutdown).
-  if (history && modify->get_fix_by_id(history_id)) modify->delete_fix(history_id);
+  // The history fix or its placeholder goes with the pair style (modify outlives force at shutdown).
+  for (const std::string &id : {history_id, history_slot_id()})
+    if (modify->get_fix_by_id(id)) modify->delete_fix(id);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -223,8 +230,10 @@ void PairLubricatedSpringDashpot::init_style()
   // Friction needs the tangential elongation of every contact, kept by a fix of our own
   // that follows atoms across neighbor-list rebuilds, ranks and restart files.
   if (any_friction && !history) {
-    history_id = "LUBRICATED_HISTORY_" + std::to_string(instance_me);
-    history = dynamic_cast<FixContactHistory *>(modify->add_fix(history_id + " all LUBRICATED_HISTORY 3"));
+    const std::string command = history_id + " all LUBRICATED_HISTORY 3";
+    history = dynamic_cast<FixContactHistory *>(modify->get_fix_by_id(history_slot_id())
+                                                    ? modify->replace_fix(history_slot_id(), command, 1)
+                                                    : modify->add_fix(command));
     if (!history) error->all(FLERR, "{}: could not create its contact-history fix", STYLE);
     // Friction added after a run: the neighbor list of that run is kept (init_list is not
     // called again while the requests are unchanged) and is the one the history follows.
@@ -233,7 +242,7 @@ void PairLubricatedSpringDashpot::init_style()
   // With a history the list is trimmed before the history is laid onto its entries.
   if (history) history->before_mapping = [this]() { trim_list_to_reach(); };
   if (!any_friction && history) {
-    modify->delete_fix(history_id);
+    modify->replace_fix(history_id, history_slot_id() + " all DUMMY", 1);
     history = nullptr;
   }
   if (comm->me == 0)

@@ -59,6 +59,8 @@ class PairLubricatedSpringDashpot : public Pair {
   bool any_tangential = false;                   // friction, rolling or shear film on some type pair
   class FixContactHistory *history = nullptr;    // tangential elongation per contact
   std::string history_id;
+  // The placeholder (fix DUMMY) holding the history's place in the fix list while there is none.
+  std::string history_slot_id() const { return history_id + "_SLOT"; }
   class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
   class FixStepVelocity *step_velocity = nullptr;    // the last step's velocities for a set-up
   bool continued = false;                            // this set-up continues the last run

@@ -14,6 +14,8 @@ rolling contacts.
 Tolerance 1e-12 relative: the restored velocities differ from the step's own by round-off
 (v - dt/2 f/m undoes v + dt/2 f/m to an ulp).
 """
+import re
+
 import pytest
 
 import dense_scenes
@@ -114,3 +116,34 @@ def test_dense_frictional_bed_restarts_as_one_run(lmp, nprocs):
     for final in (data, split, restarted):
         assert final[1] == 256
         assert final[0] == pytest.approx(single[0], rel=1e-12)
+
+
+def builds_after_first_run(log):
+    """LAMMPS's "Neighbor list builds" of the log's runs after the first, summed."""
+    return sum(int(n) for n in re.findall(r"Neighbor list builds = (\d+)", log)[1:])
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_runs_without_set_up_keep_the_history_of_their_first_steps(lmp, nprocs):
+    """`run N pre no` has no set-up: the list and the contact history's flat arrays go on from
+    the last run's, and the pair writes the new history there. The first
+    rebuild within such a run must store that history, not the records stored when the last run
+    ended (it did: the runs equalled the uninterrupted one only with `check no`, whose rebuild
+    falls on the run's first step). The fcc bed of test_dense_frictional_bed_restarts_as_one_run
+    with a skin of 10 nm (its spheres vibrate by about 25 nm in their contacts) and `every 25 check
+    yes`: a rebuild every 25 steps, the first of a run up to 25 steps after its start."""
+    scene = dense_scenes.fcc(1e-3, 1e-6, steps=400, gap_ratio=-0.002, extra="friction 0.3 rolling 0.02",
+                             loop="geom").replace("neighbor 0.0002 bin", "neighbor 1e-08 bin")
+    scene = scene.replace("every 1 check yes", "every 25 check yes")
+    assert "neighbor 1e-08 bin" in scene and "every 25 check yes" in scene
+    # The spins, which the tangential springs drive (the energy is the normal springs').
+    scene += 'print "RESULT spin $(c_rot:%.17g)"\n'
+    single = lmp(scene, nprocs=nprocs)
+    assert single["spin"] > 0.0
+    for commands in (("run 150", "run 250 pre no"), ("run 90", "run 110 pre no", "run 200 pre no")):
+        state = lmp(dense_scenes.split(scene, *commands), nprocs=nprocs)
+        assert builds_after_first_run(lmp.log) > 0, commands    # a rebuild inside the run without set-up
+        assert dense_scenes.ranks(lmp.log) == {nprocs}
+        assert state["final"][1] == 256
+        assert state["final"][0] == pytest.approx(single["final"][0], rel=1e-12), commands
+        assert state["spin"] == pytest.approx(single["spin"], rel=1e-12, abs=0.0), commands

@@ -224,3 +224,11 @@ def test_restart_continues_the_moving_drum(lmp, nprocs):
     restarted = lmp("plugin load ${plugin}\nread_restart mid.restart\ncomm_modify vel yes\n" + "\n".join(fixes)
                     + "\nrun 600\n" + dump_state(4), nprocs=nprocs, name="in.restart")
     assert_same(single, restarted, rel=1e-12)
+    # The wall redefined without friction and rolling keeps no history and drops the file's (it
+    # wrote through a null history: a segfault); the spheres then slide on the turning wall.
+    frictionless = [line.replace(" friction 0.4 rolling 0.05", "") for line in fixes]
+    assert frictionless != fixes
+    slid = lmp("plugin load ${plugin}\nread_restart mid.restart\ncomm_modify vel yes\n" + "\n".join(frictionless)
+               + "\nrun 600\n" + dump_state(4), nprocs=nprocs, name="in.frictionless")
+    assert slid.keys() == single.keys()
+    assert slid["v1"] != pytest.approx(single["v1"], rel=1e-3)

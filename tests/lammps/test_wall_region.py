@@ -384,6 +384,14 @@ def test_annulus_one_and_two_ranks_and_restart(lmp):
                     "\nrun 200\n" + 'print "RESULT torque $(f_torque[1]:%.17g) $(f_torque[2]:%.17g)"\n' +
                     dump_state(6), name="in.restart")
     assert_same(single, restarted, rel=1e-12)
+    # Both walls redefined without friction and rolling drop the file's history (a segfault
+    # before: it was written through a null history) and no longer drag the spheres along.
+    frictionless = [line.replace(" friction 0.4 rolling 0.02", "").replace(" friction 0.4", "") for line in fixes]
+    assert frictionless != fixes
+    slid = lmp("plugin load ${plugin}\nread_restart mid.restart\ncomm_modify vel yes\n" + "\n".join(frictionless) +
+               "\nrun 200\n" + 'print "RESULT torque $(f_torque[1]:%.17g) $(f_torque[2]:%.17g)"\n' + dump_state(6),
+               name="in.frictionless")
+    assert abs(slid["torque"][0]) < 0.5 * abs(single["torque"][0])
 
 
 def bad_scene(fix, region="region floor block INF INF INF INF 0.0 INF", radius=R):
