@@ -287,12 +287,16 @@ int FixContactHistory::size_restart(int i)
   return 1 + record_size(i);
 }
 
+// The largest over all ranks: rank 0 writes it to the file, whose reader sizes every atom's row
+// of per-atom fix values by it (a rank's own max let another's longer records overrun the row).
+// Called on every rank (Modify::write_restart).
 int FixContactHistory::maxsize_restart()
 {
-  int local_max = 1;
+  int local_max = 1, global_max = 1;
   for (int i = 0; i < atom->nlocal; i++)
     local_max = std::max(local_max, record_size(i));
-  return 1 + local_max;
+  MPI_Allreduce(&local_max, &global_max, 1, MPI_INT, MPI_MAX, world);
+  return 1 + global_max;
 }
 
 // Ghosts to their owners (newton on): first their record counts (REVERSE_COUNTS, one value per

@@ -237,13 +237,14 @@ def test_shear_film_in_a_dense_polydisperse_bed(lmp, packings, mu, dt):
 
 def test_shear_film_one_and_two_ranks_agree(lmp, packings):
     """The gapped bed with the shear film at mu_f = 10 Pa s, 5e-6 s, where the shear films are
-    scaled by the budget: 300 steps on 1 and 2 ranks (measured: the same energy to all digits)."""
+    scaled by the budget: 300 steps on 1 and 2 ranks (measured: the energies 1.6e-10 apart, the
+    ranks' sums in another order; 1e-8 as the other rank comparisons)."""
     data = with_velocities(lmp, packings["gapped"], speed=1e-3)
     script = dp.energy_scene(data, 10.0, 5e-6, 300, every=10, extra="shearfilm yes")
     one = lmp(script)["final"]
     two = lmp(script, nprocs=2)["final"]
     assert one[1] == two[1] == dp.N_ATOMS
-    assert two[0] == pytest.approx(one[0], rel=1e-10)
+    assert two[0] == pytest.approx(one[0], rel=1e-8)
 
 
 # ------------------------------------------------------------------------------------------
