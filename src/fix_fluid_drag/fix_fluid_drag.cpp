@@ -38,6 +38,16 @@ FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
 
   parse(narg, arg);
   if (domain->triclinic) error->all(FLERR, "{} does not support triclinic boxes", STYLE);
+  // phi is a volume fraction of spheres; a 2-d box has no volume to divide by.
+  if (needs_fraction() && domain->dimension != 3) {
+    const char *what = model.hindrance == lub::Hindrance::richardson_zaki ? "hindrance richardson-zaki"
+                       : model.hindrance == lub::Hindrance::di_felice     ? "hindrance di-felice"
+                                                                          : "superficial yes";
+    error->all(FLERR,
+               "{}: {} needs the solid volume fraction phi, which needs a 3-d simulation (dimension = {}; allowed: "
+               "dimension 3); drag without hindrance and superficial works in 2-d",
+               STYLE, what, domain->dimension);
+  }
   for (const auto &w : added_mass_walls)
     if (domain->periodicity[w.axis])
       error->all(FLERR, "{}: wall {}plane in a periodic dimension (the box must be non-periodic in {})", STYLE,
@@ -50,6 +60,7 @@ FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
   dynamic_group_allow = 1;
   bin_solid.assign(nbins[0] * nbins[1] * nbins[2], 0.0);
   local_sum.assign(bin_solid.size(), 0.0);
+  if (stores_fraction()) restart_global = 1;    // the last phi, for a restart between multiples of every
   if (history) {
     dynamic_group_allow = 0;    // an atom's history is kept while it is in the group
     setup_history();
@@ -97,18 +108,45 @@ void FixFluidDrag::init()
       else
         error->all(FLERR, "{}: variable {} must be equal-style or atom-style", STYLE, c.name);
     }
-  last_fraction_step = -1;
-  if (history && history_dt == 0.0) history_dt = update->dt;    // the tail's layout, kept
-  if (history) basset = lub::BassetHistory(history_window, history_modes, history_dt);
-  if (history && finite_re && !mei_adrian.fits(basset)) mei_adrian = lub::MeiAdrianKernel(basset);    // ~30 ms
+  run_dt = update->dt;
+  run_dt_warned = false;
+  if (history) lay_out_tail(history_begun ? history_dt : update->dt);    // kept once the history has begun
+  if (history && !stiff_warned) warn_stiff_history();
   step_velocity = dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
   if (solves_acceleration()) check_last_force_fix();
-  if (history && history_dt > 0.0 && update->dt != history_dt && !dt_warned && comm->me == 0) {
+  if (history && update->dt != history_dt && !dt_warned && comm->me == 0) {
     error->warning(FLERR,
                    "{}: the time step changed from {} to {}: the Basset window is re-weighted, its "
                    "exponential tail keeps the old step (approximate history)",
                    STYLE, history_dt, update->dt);
     dt_warned = true;
+  }
+}
+
+// Beyond beta dt / (m + m_a + m_h) = 1 the drag is capped (post_force) but the history force
+// is not: it is no longer balanced by the drag and overshoots (a sphere the drag stopped
+// moves on; 30 % above the closed form at 6 relaxation times per step). Stokes' beta at rest,
+// the smallest of the laws, so the warning is not given where the cap never acts.
+void FixFluidDrag::warn_stiff_history()
+{
+  const double root = std::sqrt(update->dt);
+  double worst = 0.0, all = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const double diameter = 2.0 * atom->radius[i];
+    const double mass = atom->rmass[i] + added_mass * model.density * lub::sphere_volume(atom->radius[i]) +
+                        2.0 * lub::basset_coefficient(diameter, model.density, model.viscosity) * root;
+    worst = std::max(worst, 3.0 * lub::pi * model.viscosity * diameter * update->dt / mass);
+  }
+  MPI_Allreduce(&worst, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (all > 1.0) {
+    if (comm->me == 0)
+      error->warning(FLERR,
+                     "{}: history yes with beta dt / (m + m_a + m_h) = {:.3g} (allowed for an accurate history: "
+                     "<= 1; beta = 3 pi mu_f d): the drag is capped there but the history force is not, and "
+                     "overshoots; use a time step {:.3g} times smaller or more",
+                     STYLE, all, all);
+    stiff_warned = true;
   }
 }
 
@@ -231,8 +269,7 @@ void FixFluidDrag::update_solid_fraction()
       local_sum[bins[k]] += weights[k] * volume;
   }
   MPI_Allreduce(local_sum.data(), bin_solid.data(), (int)bin_solid.size(), MPI_DOUBLE, MPI_SUM, world);
-  const double bin_volume =
-      domain->prd[0] * domain->prd[1] * (domain->dimension == 3 ? domain->prd[2] : 1.0) / bin_solid.size();
+  const double bin_volume = domain->prd[0] * domain->prd[1] * domain->prd[2] / bin_solid.size();    // 3-d only
   for (double &v : bin_solid)
     v /= bin_volume;
   last_fraction_step = update->ntimestep;
@@ -241,8 +278,9 @@ void FixFluidDrag::update_solid_fraction()
 void FixFluidDrag::post_force(int /*vflag*/)
 {
   const int nlocal = atom->nlocal;
-  if (needs_fraction() && (last_fraction_step < 0 || update->ntimestep - last_fraction_step >= every))
-    update_solid_fraction();
+  // At multiples of every (LAMMPS's convention), so that split runs and restarts see the
+  // same phi as one run; in between, the last one, also from the last run or a restart file.
+  if (needs_fraction() && (last_fraction_step < 0 || update->ntimestep % every == 0)) update_solid_fraction();
 
   // Fluid velocity and acceleration: constants, equal-style or atom-style variables.
   evaluate(velocity, atom_velocity);
@@ -346,7 +384,11 @@ void FixFluidDrag::post_force(int /*vflag*/)
       totals[d] += total - f[i][d];
       f[i][d] = total;
     }
-    if (history) {
+    // A set-up keeps the last step's evaluation, which the next step commits: it is the end
+    // value of that step, whereas the set-up's forces need not be the step's (nve/sphere/midpoint
+    // evaluates at the mid-step point X~, V~ and ignores them). Only an atom's first end value
+    // comes from a set-up.
+    if (history && !(update->setupflag && history_state[i][0] > 1.5)) {
       const double wdot[3] = {fluid_accel[0] - accel[0], fluid_accel[1] - accel[1], fluid_accel[2] - accel[2]};
       lub::BassetHistory::store(history_state[i], wdot);
     }

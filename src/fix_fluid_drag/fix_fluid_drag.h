@@ -58,12 +58,12 @@ class FixFluidDrag : public Fix {
     bool per_atom = false;
   };
   Component velocity[3], acceleration[3], vorticity[3];    // u_f, Du_f/Dt, curl u_f
-  bool acceleration_given = false;
+  bool acceleration_given = false, vorticity_given = false;
   bool superficial = false;
   double gravity[3] = {0.0, 0.0, 0.0};    // for buoyancy; zero vector: none
   int nbins[3] = {1, 1, 1};
   bool bins_given = false;
-  int every = 1;
+  int every = 1;    // phi at the steps that are multiples of every (kept between runs)
 
   // fluid inertia and memory (all off by default)
   double added_mass = 0.0;                                    // C_m
@@ -77,8 +77,12 @@ class FixFluidDrag : public Fix {
   bool finite_re = false;    // kernel mei-adrian (history_kernel.h) instead of Basset's
   lubricated::MeiAdrianKernel mei_adrian;
   double **history_state = nullptr;
-  double history_dt = 0.0;    // the step the tail is laid out for (0: not yet)
+  double history_dt = 0.0;       // the step the tail is laid out for
+  bool history_begun = false;    // a step has been committed (or restored): the layout is kept
   bool dt_warned = false;
+  bool stiff_warned = false;     // beta dt / (m + m_a + m_h) > 1 was reported
+  double run_dt = 0.0;           // the step at the start of this run
+  bool run_dt_warned = false;    // a change within this run was reported
 
   std::vector<double> bin_solid;    // solid volume fraction per bin
   std::vector<double> local_sum;
@@ -100,7 +104,10 @@ class FixFluidDrag : public Fix {
   int cloud_in_cell(const double *x, int *bins, double *weights) const;
   double solid_fraction_at(const double *x) const;
   void update_solid_fraction();
+  bool stores_fraction() const { return needs_fraction() && every > 1; }
   void setup_history();
+  void lay_out_tail(double dt);
+  void warn_stiff_history();
 };
 
 }    // namespace LAMMPS_NS

@@ -164,6 +164,7 @@ void FixFluidDrag::parse(int narg, char **arg)
     } else if (key == "vorticity") {
       need(iarg, 3);
       components(iarg + 1, vorticity);
+      vorticity_given = true;
       iarg += 4;
     } else if (key == "saffman") {
       need(iarg, 1);
@@ -200,6 +201,9 @@ void FixFluidDrag::parse(int narg, char **arg)
                STYLE);
   if (model.density == 0.0 && model.law == lub::DragLaw::schiller_naumann)
     model.law = lub::DragLaw::stokes;    // Re = 0 without a fluid density
+  if (saffman && !vorticity_given)
+    error->all(FLERR, "{}: saffman yes needs the vorticity keyword (the fluid's curl u_f; without it the lift is zero)",
+               STYLE);
   if (needs_fraction() && !bins_given)
     error->all(FLERR, "{}: hindrance and superficial need the bins keyword for the solid fraction", STYLE);
 }

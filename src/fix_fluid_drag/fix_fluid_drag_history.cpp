@@ -3,7 +3,8 @@
    the group carries its window and tail modes, which migrate with it and go into restart
    files, so that a restarted run continues the history exactly. A step commits the last
    evaluation in pre_force, which a set-up does not call: a set-up that evaluates the forces
-   of a step again (a run that continues, a restart) leaves the history as it was.
+   of a step again (a run that continues, a restart) leaves the history as it was. The global
+   restart data (also without history) carry the last solid fraction where every > 1.
 ------------------------------------------------------------------------- */
 
 #include "fix_fluid_drag.h"
@@ -12,8 +13,10 @@
 #include "comm.h"
 #include "error.h"
 #include "memory.h"
+#include "update.h"
 
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -33,8 +36,32 @@ void FixFluidDrag::setup_history()
   atom->add_callback(Atom::RESTART);
 }
 
+void FixFluidDrag::lay_out_tail(double dt)
+{
+  history_dt = dt;
+  basset = lubricated::BassetHistory(history_window, history_modes, history_dt);
+  if (finite_re && !mei_adrian.fits(basset)) mei_adrian = lubricated::MeiAdrianKernel(basset);    // ~30 ms
+}
+
 void FixFluidDrag::pre_force(int /*vflag*/)
 {
+  // The first step commits only the set-up's end values: the window and tail are still empty,
+  // so a step changed since init() (fix dt/reset's set-up) lays the tail out anew, exactly.
+  // Later, a step changed within a run (fix dt/reset) leaves the history as a change between
+  // runs does (init()), approximate; say so once per run.
+  if (!history_begun) {
+    if (update->dt != history_dt) lay_out_tail(update->dt);
+    history_begun = true;
+    run_dt = update->dt;
+  } else if (update->dt != run_dt && !run_dt_warned) {
+    if (comm->me == 0)
+      error->warning(FLERR,
+                     "{}: the time step changed within the run from {} to {} at step {} (fix dt/reset?): the "
+                     "Basset window's steps are weighted with the new step, its exponential tail keeps the rates "
+                     "of step {} (approximate history; see the doc)",
+                     STYLE, run_dt, update->dt, update->ntimestep, history_dt);
+    run_dt_warned = true;
+  }
   const int *mask = atom->mask;
   for (int i = 0; i < atom->nlocal; i++)
     if (mask[i] & groupbit) basset.commit(history_state[i]);
@@ -95,24 +122,45 @@ int FixFluidDrag::maxsize_restart()
   return basset.size() + 1;
 }
 
-// Global: the window, the tail modes and the step the tail is laid out for.
+// Global restart data, as doubles: a format mark -1 (older files begin with the window, >= 1),
+// then the window and tail modes (0 0 without history) and the step the tail is laid out for,
+// the step of the last solid fraction (-1: none) and the number of bins and their phi (0 and
+// none unless every > 1, when a restart between multiples of every needs the last phi).
 void FixFluidDrag::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  const double data[3] = {static_cast<double>(history_window), static_cast<double>(history_modes), history_dt};
-  const int size = sizeof(data);
+  std::vector<double> data = {-1.0, history ? static_cast<double>(history_window) : 0.0,
+                              history ? static_cast<double>(history_modes) : 0.0, history ? history_dt : 0.0,
+                              static_cast<double>(last_fraction_step)};
+  const bool fraction = stores_fraction() && last_fraction_step >= 0;
+  data.push_back(fraction ? static_cast<double>(bin_solid.size()) : 0.0);
+  if (fraction) data.insert(data.end(), bin_solid.begin(), bin_solid.end());
+  const int size = static_cast<int>(data.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
-  fwrite(data, sizeof(double), 3, fp);
+  fwrite(data.data(), sizeof(double), data.size(), fp);
 }
 
 void FixFluidDrag::restart(char *buf)
 {
-  double data[3];
-  std::memcpy(data, buf, sizeof(data));
-  if (static_cast<int>(data[0]) != history_window || static_cast<int>(data[1]) != history_modes)
-    error->all(FLERR,
-               "{}: the restart file's history has window {} and tail {}, the fix window {} and tail {}: "
-               "give the same values",
-               STYLE, static_cast<int>(data[0]), static_cast<int>(data[1]), history_window, history_modes);
-  history_dt = data[2];
+  double head[6];
+  std::memcpy(head, buf, 3 * sizeof(double));
+  const bool old_format = head[0] > 0.0;    // window, tail, history_dt
+  if (!old_format) std::memcpy(head, buf, 6 * sizeof(double));
+  const double *saved = old_format ? head : head + 1;
+  const int window = static_cast<int>(saved[0]), modes = static_cast<int>(saved[1]);
+  if (history && window > 0) {
+    if (window != history_window || modes != history_modes)
+      error->all(FLERR,
+                 "{}: the restart file's history has window {} and tail {}, the fix window {} and tail {}: "
+                 "give the same values",
+                 STYLE, window, modes, history_window, history_modes);
+    history_dt = saved[2];
+    history_begun = true;
+  }
+  if (old_format) return;
+  const auto count = static_cast<std::size_t>(head[5]);
+  if (stores_fraction() && head[4] >= 0.0 && count == bin_solid.size()) {    // other bins: recomputed
+    std::memcpy(bin_solid.data(), buf + 6 * sizeof(double), count * sizeof(double));
+    last_fraction_step = static_cast<bigint>(head[4]);
+  }
 }

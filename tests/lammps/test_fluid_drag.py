@@ -93,3 +93,90 @@ def test_bad_input(lmp, extra, fragment):
     lmp(sphere(extra=extra, steps=1), check=False)
     error = next(line for line in lmp.log.splitlines() if "ERROR" in line)
     assert fragment in error, error
+
+
+TWO_D = """plugin load ${plugin}
+units si
+dimension 2
+atom_style sphere
+atom_modify map array
+boundary p p p
+comm_modify vel yes
+region box block 0 0.01 0 0.01 -0.0005 0.0005
+create_box 1 box
+create_atoms 1 single 0.005 0.005 0
+set group all diameter 1e-4 density 2500
+pair_style lubricated/springdashpot
+pair_coeff * * 0.9
+fix nve all nve/sphere
+fix e2d all enforce2d
+fix weight all gravity 9.81 vector 0 -1 0
+fix fluid all fluid/drag viscosity 0.05 density 1000 law stokes buoyancy 0 -9.81 0 {extra}
+timestep 1e-6
+run 3000
+print "RESULT vy $(vy[1]:%.15g)"
+"""
+
+
+@pytest.mark.parametrize("extra,keyword", [
+    ("hindrance richardson-zaki 4.65 bins 4 4 1", "hindrance richardson-zaki"),
+    ("hindrance di-felice bins 4 4 1", "hindrance di-felice"),
+    ("superficial yes bins 4 4 1", "superficial yes"),
+])
+def test_solid_fraction_needs_a_3d_simulation(lmp, extra, keyword):
+    """phi is a volume fraction: in 2-d (before: sphere volume over bin area, a length, so the
+    hindrance did nothing) what needs it stops with an error naming the keyword; the drag
+    alone still runs in 2-d, a lone sphere settling at Stokes' u_t (Re ~ 1e-4)."""
+    lmp(TWO_D.replace("{extra}", extra), check=False)
+    error = next(line for line in lmp.log.splitlines() if "ERROR" in line)
+    assert f"{keyword} needs the solid volume fraction phi, which needs a 3-d simulation (dimension = 2" in error, error
+    vy = lmp(TWO_D.replace("{extra}", "bins 4 4 1"))["vy"]
+    assert -vy == pytest.approx(stokes_terminal(1e-4, 2500, 1000, 0.05), rel=0.01)
+
+
+SUSPENSION = """plugin load ${plugin}
+units si
+atom_style sphere
+atom_modify map array
+boundary p p p
+comm_modify vel yes
+neigh_modify every 1 delay 0 check no
+region box block 0 0.006 0 0.006 0 0.012
+create_box 1 box
+lattice sc 0.002 origin 0.25 0.25 0.25
+create_atoms 1 box
+displace_atoms all random 3e-4 3e-4 3e-4 4711 units box
+set group all diameter 1e-3 density 2500
+pair_style lubricated/springdashpot
+pair_coeff * * 0.9
+"""
+SUSPENSION_FIXES = """fix nve all nve/sphere
+fix weight all gravity 9.81 vector 0 0 -1
+fix fluid all fluid/drag viscosity 0.05 density 1200 law stokes hindrance richardson-zaki 4.65 &
+    velocity 0.02 0 0 buoyancy 0 0 -9.81 bins 3 3 6 every 7
+timestep 2e-4
+"""
+N_SUSPENSION = 54    # 3 x 3 x 6
+
+
+@pytest.mark.parametrize("runs", [("run 150", "run 150"), ("run 147", "run 0", "run 153")], ids=["150", "147"])
+def test_solid_fraction_every_n_continues_across_runs_and_restarts(lmp, runs):
+    """every 7: phi at the multiples of 7 (and the first set-up), the last one kept between
+    runs and carried by the restart file. A split at step 150 (between multiples; before, each
+    run recomputed phi at its set-up and counted 7 from there) or at 147 (a multiple, then
+    recomputed from the same positions), and a new process reading the restart file written
+    there, all continue as the uninterrupted run: 1e-12 relative (the set-up of a continued
+    run restores the last step's velocities to round-off, fix_step_velocity.h)."""
+    from scene_chain import dump_state
+    whole = lmp(SUSPENSION + SUSPENSION_FIXES + "run 300\n" + dump_state(N_SUSPENSION))
+    split = lmp(SUSPENSION + SUSPENSION_FIXES + "\n".join(runs) + "\n" + dump_state(N_SUSPENSION))
+    first = runs[0]
+    lmp(SUSPENSION + SUSPENSION_FIXES + f"{first}\nwrite_restart mid.restart\n", name="in.first")
+    rest = 300 - int(first.split()[1])
+    restarted = lmp("plugin load ${plugin}\nread_restart mid.restart\ncomm_modify vel yes\n"
+                    "neigh_modify every 1 delay 0 check no\n" + SUSPENSION_FIXES + f"run {rest}\n" +
+                    dump_state(N_SUSPENSION), name="in.restart")
+    assert "Resetting global fix info from restart file" in lmp.log
+    for key in whole:
+        assert split[key] == pytest.approx(whole[key], rel=1e-12, abs=1e-18), key
+        assert restarted[key] == pytest.approx(whole[key], rel=1e-12, abs=1e-18), key
