@@ -309,10 +309,11 @@ void FixLubricatedFilmBudget::check_network()
     }
   };
   if (!scores.decide(world, network_warned_, describe, found)) return;
-  // LIGGGHTS's Error keeps a pointer to the text: it must outlive this call.
+  // LIGGGHTS's Error keeps a pointer to the text: it must outlive this call. The bounds count
+  // LIGGGHTS's sampled tangential spring (network_loads): the advice must too.
   static std::string message;
   message = with_property_names(network_message(
-      "model lubricated", coefficients_[found.type_i * (ntypes_ + 1) + found.type_j], update->dt, found));
+      "model lubricated", coefficients_[found.type_i * (ntypes_ + 1) + found.type_j], update->dt, found, true));
   if (found.unstable) error->all(FLERR, message.c_str());
   if (comm->me == 0) error->warning(FLERR, message.c_str());
 }

@@ -11,9 +11,13 @@
 
 #include "liggghts/fix_style_map.h"
 
+#include <algorithm>
 #include <cstring>
+#include <limits>
+#include <map>
 #include <mpi.h>
 #include <string>
+#include <vector>
 
 namespace lubricated {
 namespace liggghts {
@@ -36,7 +40,29 @@ struct NveSphereAddedMass : LAMMPS_NS::FixNVESphere {
   }
 };
 
+struct RadiusWatch {
+  LAMMPS_NS::LAMMPS *lmp;
+  double covered;
+  std::function<void(double)> smaller;
+};
+
+std::map<const void *, RadiusWatch> &radius_watches()
+{
+  static std::map<const void *, RadiusWatch> watches;
+  return watches;
+}
+
 }    // namespace
+
+void watch_radius(LAMMPS_NS::LAMMPS *lmp, const void *model, double covered, std::function<void(double)> smaller)
+{
+  radius_watches()[model] = RadiusWatch{lmp, covered, std::move(smaller)};
+}
+
+void forget_radius(const void *model)
+{
+  radius_watches().erase(model);
+}
 
 FixLubricatedStepVelocity *FixLubricatedStepVelocity::find_or_create(LAMMPS_NS::LAMMPS *lmp)
 {
@@ -90,10 +116,35 @@ bool FixLubricatedStepVelocity::integrated_by_nve_sphere()
   return integrated_bits_ != 0;
 }
 
+// Before every neighbor list build (atoms inserted since the last one are there): the smallest
+// radius, for the models that watch it. Collective, as every rank holds the same watches.
+void FixLubricatedStepVelocity::check_radii()
+{
+  std::vector<RadiusWatch *> watching;
+  for (auto &w : radius_watches())
+    if (w.second.lmp == lmp) watching.push_back(&w.second);
+  if (watching.empty()) return;
+  double local = std::numeric_limits<double>::infinity(), smallest = local;
+  for (int i = 0; i < atom->nlocal; i++)
+    local = std::min(local, atom->radius[i]);
+  MPI_Allreduce(&local, &smallest, 1, MPI_DOUBLE, MPI_MIN, world);
+  for (RadiusWatch *w : watching)
+    if (smallest < w->covered) {
+      w->covered = smallest;
+      w->smaller(smallest);
+    }
+}
+
+void FixLubricatedStepVelocity::pre_neighbor()
+{
+  check_radii();
+}
+
 // After the set-up's migration and borders, before any force: whether the set-up continues the
 // last run, and then the ghosts' kicks (velocities set between runs count as that step's).
 void FixLubricatedStepVelocity::setup_pre_neighbor()
 {
+  check_radii();
   continuing_ = continuable_ && update->whichflag == 1 && update->dt == step_dt_ && integrated_by_nve_sphere();
   if (continuing_) comm->forward_comm_fix(this);
 }

@@ -10,13 +10,26 @@
 // LIGGGHTS's own tangential and rolling models still see the full-step velocities.
 //
 // The model's pair and wall models create it (ID lubricated_step_velocity) at their init.
+//
+// It also watches the smallest radius for the models with a grid spacing, whose film reach
+// (0.75 dx) is a contact distance factor of the smallest sphere: a smaller one that appears
+// during a run (fix insert) is reported to them before the neighbor list is built.
 #pragma once
 
 #include "fix.h"
 #include "update.h"
 
+#include <functional>
+
 namespace lubricated {
 namespace liggghts {
+
+// A model (key: its address, never dereferenced) whose contact distance covers the radii from
+// `covered` up: smaller(r) is called on every rank when the smallest radius r < covered first
+// appears at a neighbor list build of lmp (then covered = r). The model forgets itself when it
+// is destroyed; the registry outlives the fixes.
+void watch_radius(LAMMPS_NS::LAMMPS *lmp, const void *model, double covered, std::function<void(double)> smaller);
+void forget_radius(const void *model);
 
 class FixLubricatedStepVelocity : public LAMMPS_NS::Fix {
  public:
@@ -27,7 +40,7 @@ class FixLubricatedStepVelocity : public LAMMPS_NS::Fix {
   FixLubricatedStepVelocity(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg);
   ~FixLubricatedStepVelocity() override;
   int setmask() override;
-  void pre_neighbor() override {}
+  void pre_neighbor() override;
   void setup_pre_neighbor() override;
   void post_run() override;
 
@@ -64,6 +77,7 @@ class FixLubricatedStepVelocity : public LAMMPS_NS::Fix {
   double step_dt_ = 0.0;        // the time step of that step
   int integrated_bits_ = 0;     // the groups of the fixes nve/sphere
   bool integrated_by_nve_sphere();
+  void check_radii();
 };
 
 }    // namespace liggghts

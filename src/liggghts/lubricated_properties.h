@@ -9,6 +9,7 @@
 //   lubricatedSaturation     scalar           eps_1 (default 1e-3)
 //   lubricatedRelease        scalar           eps_2 (default -1e-2; 0 with lubricatedLegendre)
 //   lubricatedLegendre       scalar           A: contact calibrated to e / e_d = exp(-A / St)
+//   lubricatedLimitPair      scalar           1: each film capped on its own (default 0)
 //
 // The values go through the kernel's Coefficients and validate(), the same ranges and
 // messages as pair_coeff in the LAMMPS plugin, with each keyword named by its property.
@@ -23,6 +24,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -69,14 +71,47 @@ inline std::string with_property_names(std::string message)
   return out;
 }
 
-// An optional scalar property: sets value and returns true when it exists.
-inline bool read_scalar(LAMMPS_NS::Modify *modify, const char *name, const char *caller, double &value)
+// The properties the model reads as one global value; coefficientRestitution is per type pair.
+constexpr const char *scalar_properties[] = {"lubricatedContactSteps", "lubricatedContactTime", "lubricatedViscosity",
+                                             "lubricatedActivation",   "lubricatedGridSpacing", "lubricatedSaturation",
+                                             "lubricatedRelease",      "lubricatedLegendre",    "lubricatedLimitPair"};
+
+inline bool is_scalar_property(const char *name)
 {
-  auto *fix = static_cast<LAMMPS_NS::FixPropertyGlobal *>(
-      modify->find_fix_property(name, "property/global", "scalar", 0, 0, caller, false));
-  if (!fix) return false;
-  value = fix->compute_scalar();
-  return true;
+  for (const char *p : scalar_properties)
+    if (std::strcmp(name, p) == 0) return true;
+  return false;
+}
+
+// A scalar property given in another style: LIGGGHTS's lookup by style would skip it silently
+// (the model then ran with the default, e.g. dry).
+inline std::string scalar_style_error(const std::string &fix_id, const std::string &name, const std::string &style)
+{
+  return "model lubricated: fix " + fix_id + " property/global " + name + ": style " + style + " is not allowed; " +
+         name + " must be scalar (one value for every type pair: fix ID all property/global " + name + " scalar value)";
+}
+
+// An optional scalar property: sets value and returns true when it exists. A property/global
+// of that name in another style sets message (property_text.cpp refuses it when it is defined;
+// this catches one that was not seen there).
+inline bool read_scalar(LAMMPS_NS::Modify *modify, const char *name, const char *caller, double &value,
+                        std::string &message)
+{
+  for (int f = 0; f < modify->nfix; f++) {
+    if (!modify->fix[f] || std::strcmp(modify->fix[f]->style, "property/global") != 0) continue;
+    auto *fix = static_cast<LAMMPS_NS::FixPropertyGlobal *>(modify->fix[f]);
+    if (fix->check_fix(name, "scalar", 0, 0, caller, false)) {
+      value = fix->compute_scalar();
+      return true;
+    }
+    const bool vector = fix->check_fix(name, "vector", 0, 0, caller, false) != nullptr;
+    if (vector || fix->check_fix(name, "matrix", 0, 0, caller, false)) {
+      if (message.empty())
+        message = scalar_style_error(fix->id, name, vector ? "vector or peratomtype" : "matrix or peratomtypepair");
+      return false;
+    }
+  }
+  return false;
 }
 
 // Coefficients per type pair, index i * (ntypes + 1) + j; message is set on bad input.
@@ -89,14 +124,17 @@ inline std::vector<Coefficients> read_coefficients(LAMMPS_NS::Modify *modify, in
       "coefficientRestitution", "property/global", "peratomtypepair", ntypes, ntypes, caller));
   Coefficients common;    // defaults unless the property exists (read_scalar leaves them)
   Given given;
-  given.ncontact = read_scalar(modify, "lubricatedContactSteps", caller, common.n_contact);
-  given.tcontact = read_scalar(modify, "lubricatedContactTime", caller, common.t_contact);
-  read_scalar(modify, "lubricatedViscosity", caller, common.viscosity);
-  given.activation = read_scalar(modify, "lubricatedActivation", caller, common.eps_activation);
-  given.grid = read_scalar(modify, "lubricatedGridSpacing", caller, common.grid_spacing);
-  read_scalar(modify, "lubricatedSaturation", caller, common.eps_saturation);
-  given.release = read_scalar(modify, "lubricatedRelease", caller, common.eps_release);
-  read_scalar(modify, "lubricatedLegendre", caller, common.legendre);
+  given.ncontact = read_scalar(modify, "lubricatedContactSteps", caller, common.n_contact, message);
+  given.tcontact = read_scalar(modify, "lubricatedContactTime", caller, common.t_contact, message);
+  read_scalar(modify, "lubricatedViscosity", caller, common.viscosity, message);
+  given.activation = read_scalar(modify, "lubricatedActivation", caller, common.eps_activation, message);
+  given.grid = read_scalar(modify, "lubricatedGridSpacing", caller, common.grid_spacing, message);
+  read_scalar(modify, "lubricatedSaturation", caller, common.eps_saturation, message);
+  given.release = read_scalar(modify, "lubricatedRelease", caller, common.eps_release, message);
+  read_scalar(modify, "lubricatedLegendre", caller, common.legendre, message);
+  double limit_pair = 0.0;
+  read_scalar(modify, "lubricatedLimitPair", caller, limit_pair, message);
+  if (!message.empty()) return table;
   complete_defaults(common, given);
 
   for (int i = 1; i <= ntypes; i++)

@@ -86,6 +86,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   {
     if (!is_wall_) lubricated::liggghts::note_pair_contact_model(cmb, this);
   }
+  ~NormalModel() { lubricated::liggghts::forget_radius(this); }
 
   void registerSettings(Settings &) {}
   void postSettings(IContactHistorySetup *, ContactModelBase *) {}
@@ -155,6 +156,13 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     warned_ = false;
     if (!is_wall_) find_immovable_groups();
     step_velocity_ = lubricated::liggghts::FixLubricatedStepVelocity::find_or_create(lmp);
+    // With a grid spacing the factor covers the radii from r_min up: a smaller sphere inserted
+    // during the run raises it before the neighbor list build where it appears.
+    if (lubricated::liggghts::reach_fraction(coefficients_, ntypes_, is_wall_, 0.0) < 0.0)
+      lubricated::liggghts::watch_radius(lmp, this, r_min_all,
+                                         [this, caller, r_min_all](double r) { smaller_radius(r, r_min_all, caller); });
+    else
+      lubricated::liggghts::forget_radius(this);
     join_film_budget(caller);
     report_setup(caller);
   }
@@ -442,13 +450,39 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
       error->warning(FLERR, w.c_str());
   }
 
+  // A sphere of radius r, smaller than the smallest at the run's start (r_start), appeared: the
+  // film of a grid spacing reaches 0.75 dx whatever the radius, i.e. farther in units of its
+  // radius. Checked (eps_al <= 1) and covered as at the run's start, before the neighbor build.
+  void smaller_radius(double r, double r_start, const char *caller)
+  {
+    for (const lubricated::Coefficients &c : coefficients_) {
+      const std::string problem = lubricated::validate_grid_for_radius(c, r);
+      if (!problem.empty())
+        fail(std::string(caller) + ": a sphere of radius " + lubricated::detail::number(r) +
+             " appeared during the run (the smallest at its start: " + lubricated::detail::number(r_start) +
+             "): " + lubricated::liggghts::with_property_names(problem) +
+             ". Use a smaller lubricatedGridSpacing, or lubricatedActivation");
+    }
+    const double reach = lubricated::liggghts::reach_fraction(coefficients_, ntypes_, is_wall_, r);
+    neighbor->register_contact_dist_factor(1.0 + reach + lubricated::liggghts::approach_margin);
+    if (comm->me == 0) {
+      const std::string line = std::string(caller) + ": a sphere of radius " + lubricated::detail::number(r) +
+                               " appeared (the smallest at the run's start: " + lubricated::detail::number(r_start) +
+                               "); the film of lubricatedGridSpacing now raises the contact distance factor to " +
+                               lubricated::detail::number(neighbor->contactDistanceFactor) + "\n";
+      if (screen) fputs(line.c_str(), screen);
+      if (logfile) fputs(line.c_str(), logfile);
+    }
+  }
+
   // The pair's model creates the budget fix (and keeps it after the walls); a wall joins it when
   // it exists. Dry scenes take no part: the fix then does nothing.
   void join_film_budget(const char *caller)
   {
     double limit_pair = 0.0;
-    if (lubricated::liggghts::read_scalar(modify, "lubricatedLimitPair", caller, limit_pair) && limit_pair != 0.0 &&
-        limit_pair != 1.0)
+    std::string style_error;    // reported by read_coefficients already
+    if (lubricated::liggghts::read_scalar(modify, "lubricatedLimitPair", caller, limit_pair, style_error) &&
+        limit_pair != 0.0 && limit_pair != 1.0)
       fail(std::string(caller) + ": lubricatedLimitPair = " + lubricated::detail::number(limit_pair) +
            " must be 0 (the films of each sphere share its many-body budget, the default) or 1 "
            "(each film capped on its own)");

@@ -5,10 +5,12 @@
 // library interposes fix property/global's constructor (libliggghts calls it through its PLT,
 // and this library precedes libliggghts in the lookup order both with LD_PRELOAD and in the
 // liggghts-lubricated launcher, which links it first), checks the values of the properties
-// the model reads, then calls LIGGGHTS's own constructor. Other properties are left to
-// LIGGGHTS.
+// the model reads and that its global ones are given as scalars, then calls LIGGGHTS's own
+// constructor. Other properties are left to LIGGGHTS.
 #include "error.h"
 #include "lammps.h"
+
+#include "liggghts/lubricated_properties.h"
 
 #include <dlfcn.h>
 
@@ -69,6 +71,12 @@ lubricated_checked_property_global(void *self, LAMMPS_NS::LAMMPS *lmp, int narg,
 
 extern "C" void lubricated_checked_property_global(void *self, LAMMPS_NS::LAMMPS *lmp, int narg, char **arg)
 {
+  // LIGGGHTS's lookup by style skips a scalar property given in another style without a word.
+  if (narg > 4 && lubricated::liggghts::is_scalar_property(arg[3]) && std::strcmp(arg[4], "scalar") != 0) {
+    static std::string message;    // LIGGGHTS's Error keeps a pointer to the text
+    message = lubricated::liggghts::scalar_style_error(arg[0], arg[3], arg[4]);
+    lmp->error->all(FLERR, message.c_str());
+  }
   if (narg > 5 && read_by_model(arg[3]))
     for (int k = first_value(arg[4]); k < narg; k++)
       if (!is_number(arg[k]))

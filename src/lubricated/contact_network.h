@@ -88,20 +88,54 @@ inline double contact_load_of_steps(double e, double n)
   return 3.0 - E * E - 2.0 * E * C;
 }
 
-// Smallest contact duration in steps (up to 1e6) at which the exact integration with
-// restitutions e_n (normal) and e_t (tangential; < 0: none) has a load at most `load`.
-inline double contact_steps_for_load(double e_n, double e_t, double load)
+// Load of a spring-dashpot with restitution e (0 < e <= 1) lasting n steps whose force is sampled
+// once per step (integration sampled; LIGGGHTS's tangential models, kt = 2/7 k on 2/7 m_e):
+// (k/m) dt^2 + 2 (c/m) dt with k/m = (pi^2 + ln^2 e) / t_c^2, c/m = -2 ln e / t_c (spring_dashpot.h).
+inline double sampled_load_of_steps(double e, double n)
 {
-  auto worst = [&](double n) {
-    return std::max(contact_load_of_steps(e_n, n), e_t >= 0.0 ? contact_load_of_steps(e_t, n) : 0.0);
-  };
-  double lo = 1.0, hi = 1e6;
-  if (worst(lo) <= load) return lo;
+  const double l = std::log(e), pi = 3.14159265358979323846;
+  return (pi * pi + l * l) / (n * n) - 4.0 * l / n;
+}
+
+// How the load that bounds a type pair's contacts depends on their duration n (steps), as the
+// engines set it: the normal contact's (exact or sampled integration) and, where one acts, a
+// tangential spring's: exact with restitution e_t (the LAMMPS pair style's friction) or sampled
+// with the normal's k/m_e and c/m_e (LIGGGHTS's tangential models).
+struct ContactLoadModel {
+  double e_n = 1.0;
+  bool sampled_normal = false;
+  double e_t = -1.0;                  // >= 0: an exact tangential spring of this restitution
+  bool sampled_tangential = false;    // a sampled tangential spring of the normal's constants
+
+  double operator()(double n) const
+  {
+    double load = sampled_normal ? sampled_load_of_steps(e_n, n) : contact_load_of_steps(e_n, n);
+    if (e_t >= 0.0) load = std::max(load, contact_load_of_steps(e_t, n));
+    if (sampled_tangential) load = std::max(load, sampled_load_of_steps(e_n, n));
+    return load;
+  }
+};
+
+// Smallest contact duration in steps, from `from` up to 1e6, at which the model's load is at most
+// `load` (to 1e-3 relative; the loads fall with n).
+inline double contact_steps_for_load(const ContactLoadModel &model, double load, double from = 1.0)
+{
+  double lo = from, hi = 1e6;
+  if (model(lo) <= load) return lo;
   for (int it = 0; it < 200 && hi - lo > 1e-3 * lo; ++it) {
     const double mid = std::sqrt(lo * hi);
-    (worst(mid) <= load ? hi : lo) = mid;
+    (model(mid) <= load ? hi : lo) = mid;
   }
   return hi;
+}
+
+// The same for the exact integration with restitutions e_n (normal) and e_t (tangential; < 0: none).
+inline double contact_steps_for_load(double e_n, double e_t, double load)
+{
+  ContactLoadModel model;
+  model.e_n = e_n;
+  model.e_t = e_t;
+  return contact_steps_for_load(model, load);
 }
 
 // Per-sphere sums over its sustained contacts: T, the six components of F (xx yy zz xy xz yz)

@@ -283,8 +283,8 @@ TEST(ContactNetwork, MessageNamesTheDurationAndARemedyThatHolds)
   EXPECT_EQ(error.rfind("pair_style x types 1 2: ncontact = 2 is too short a contact for this packing", 0), 0u);
   EXPECT_NE(error.find("atoms 70 (8 contacts) and 82 (9)"), std::string::npos);
   EXPECT_NE(error.find("(load 4.92 >= 4;"), std::string::npos);
-  const double needed = contact_steps_for_load(0.9, -1.0, stable_network_load / f.largest_unit_upper);
-  EXPECT_LE(contact_load_of_steps(0.9, needed) * f.largest_unit_upper, stable_network_load * (1 + 1e-9));
+  const double needed = advised_contact_steps(contact_load_model(c, false), f.largest_unit_upper, 2.0);
+  EXPECT_LT(contact_load_of_steps(0.9, needed) * f.largest_unit_upper, stable_network_load);
   char remedy[64];
   std::snprintf(remedy, sizeof remedy, "Use ncontact >= %.3g ", needed);
   EXPECT_NE(error.find(remedy), std::string::npos);
@@ -300,4 +300,87 @@ TEST(ContactNetwork, MessageNamesTheDurationAndARemedyThatHolds)
             std::string::npos);
   EXPECT_NE(warning.find("reach the upper bound 5.36 >= 4"), std::string::npos);
   EXPECT_NE(warning.find("a longer tcontact or a timestep <="), std::string::npos);
+}
+
+// The sampled spring-dashpot's load (LIGGGHTS's tangential models, integration sampled): that of
+// the constants of spring_dashpot_from_restitution.
+TEST(ContactNetwork, SampledLoadIsThatOfTheSpringDashpot)
+{
+  const double dt = 1e-5;
+  for (double e : {1.0, 0.9, 0.5, 0.1, 0.01})
+    for (double n : {1.0, 1.5, 2.0, 3.0, 8.0, 100.0}) {
+      const SpringDashpot sd = spring_dashpot_from_restitution(e, n * dt);
+      const double load = contact_load(sd.stiffness_per_mass, sd.damping_per_mass, dt);
+      EXPECT_NEAR(sampled_load_of_steps(e, n), load, 1e-12 * load) << "e = " << e << ", N_c = " << n;
+    }
+}
+
+namespace {
+// The number that follows `key` in a message.
+double number_after(const std::string &text, const std::string &key)
+{
+  const size_t at = text.find(key);
+  return at == std::string::npos ? -1.0 : std::strtod(text.c_str() + at + key.size(), nullptr);
+}
+}    // namespace
+
+// The advised duration, as printed and typed back, passes the upper bound (load below 4) and, where
+// the current one fails, is longer; one step of 3 digits less fails or is not longer. For every
+// load model of the engines, whatever the margin by which the current duration fails.
+TEST(ContactNetwork, AdvisedDurationPassesAndExceedsTheCurrent)
+{
+  for (int kind = 0; kind < 4; kind++)
+    for (double e : {1.0, 0.9, 0.5, 0.1})
+      for (double current : {1.0, 1.3, 1.5, 2.0, 2.5, 3.0, 5.0, 8.0, 30.0})
+        for (double margin : {1.0001, 1.001, 1.3, 3.0, 10.0, 100.0}) {
+          ContactLoadModel load;
+          load.e_n = e;
+          load.sampled_normal = kind == 1;
+          load.e_t = kind == 2 ? 0.3 : -1.0;
+          load.sampled_tangential = kind == 3;    // LIGGGHTS
+          const double unit_upper = margin * stable_network_load / load(current);
+          const double advised = advised_contact_steps(load, unit_upper, current);
+          const double typed = std::strtod(detail::number3(advised).c_str(), nullptr);
+          const std::string where = "kind " + std::to_string(kind) + ", e = " + std::to_string(e) +
+                                    ", N_c = " + std::to_string(current) + ", margin " + std::to_string(margin);
+          EXPECT_EQ(typed, advised) << where;
+          EXPECT_LT(load(typed) * unit_upper, stable_network_load) << where;
+          EXPECT_GT(typed, current) << where;
+          const double less = detail::step3(typed, false, true);
+          EXPECT_TRUE(!(load(less) * unit_upper < stable_network_load) || !(less > current)) << where;
+        }
+}
+
+// The LIGGGHTS probe's WARNING at N_c = 1 on an isolated contact (upper bound 10.3, the sampled
+// tangential spring's load): it advised "lubricatedContactSteps >= 1", the duration in use. The
+// printed duration and time step now pass.
+TEST(ContactNetwork, MessageAdvisesADurationThatPasses)
+{
+  const double dt = 1e-5;
+  Coefficients c;
+  c.e_dry = 0.9;
+  ContactLoadModel liggghts;
+  liggghts.e_n = 0.9;
+  liggghts.sampled_tangential = true;
+  for (double steps : {1.0, 2.0, 3.0})
+    for (double unit_upper : {1.0, 2.5, 4.0}) {
+      c.n_contact = steps;
+      c.t_contact = 0.0;
+      NetworkFinding f;
+      f.load = liggghts(steps) * unit_upper;
+      if (f.load < stable_network_load) continue;
+      f.largest_unit_upper = unit_upper;
+      f.largest_lower = 3.0;
+      const std::string warning = network_message("model lubricated", c, dt, f, true);
+      const double advised = number_after(warning, "use ncontact >= ");
+      EXPECT_GT(advised, steps) << warning;
+      EXPECT_LT(liggghts(advised) * unit_upper, stable_network_load) << warning;
+
+      c.t_contact = steps * dt;
+      const std::string timed = network_message("model lubricated", c, dt, f, true);
+      const double dt_advised = number_after(timed, "a timestep <= ");
+      EXPECT_GT(dt_advised, 0.0) << timed;
+      EXPECT_LT(liggghts(c.t_contact / dt_advised) * unit_upper, stable_network_load) << timed;
+      EXPECT_GE(c.t_contact / dt_advised, number_after(timed, "(N_c >= ")) << timed;
+    }
 }

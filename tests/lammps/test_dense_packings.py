@@ -415,6 +415,19 @@ def test_too_short_a_contact_stops_with_an_error(lmp, packings, duration, named,
     assert "Lost atoms" not in err.value.log
 
 
+def test_the_advised_contact_duration_runs_silently(lmp, packings):
+    """The ERROR's advice (N_c = 2 on the preloaded bed) is a duration whose upper bound is below 4:
+    run with it, the check says nothing (the advice is the shortest of 3 digits, rounded up, whose
+    bound passes: tests/kernel/test_contact_network.cpp; in LIGGGHTS it once named the N_c in use)."""
+    with pytest.raises(lammps_run.LammpsError) as err:
+        lmp(dry_preloaded(lmp, packings, 0.9, "ncontact 2"))
+    advised = float(re.search(r"Use ncontact >= (\S+?)[ .,;]", str(err.value)).group(1))
+    assert 2.0 < advised < 8.0
+    rows, log = run_energy(lmp, dry_preloaded(lmp, packings, 0.9, f"ncontact {advised}", steps=1000))
+    assert "contact network" not in log and "too short" not in log
+    assert_bounded(rows, rows[0, 2] + rows[0, 3] + rows[0, 4])
+
+
 @pytest.mark.parametrize("extra", ["", "friction 0.5"])
 def test_compression_with_too_short_a_contact_stops_with_an_error(lmp, packings, extra):
     """Dry compression from 0.46 to 0.70 at N_c = 2: the network becomes unstable on the way

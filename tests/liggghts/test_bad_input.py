@@ -91,6 +91,29 @@ def test_error_names_the_property(run, case):
         assert text in error, (text, error)
 
 
+# The model's global properties with a valid value each: in another style than scalar LIGGGHTS's
+# lookup by style skipped them without a word (the run went on dry, or with N_c = 8).
+SCALAR_PROPERTIES = {"lubricatedContactSteps": "8", "lubricatedContactTime": "4e-4", "lubricatedViscosity": "1e-3",
+                     "lubricatedActivation": "0.09375", "lubricatedGridSpacing": "1e-4",
+                     "lubricatedSaturation": "1e-3", "lubricatedRelease": "-1e-2", "lubricatedLegendre": "35",
+                     "lubricatedLimitPair": "1"}
+OTHER_STYLES = {"vector": "{v} {v}", "peratomtype": "{v} {v}", "peratomtypepair": "2 {v} {v} {v} {v}"}
+
+
+@pytest.mark.parametrize("style", sorted(OTHER_STYLES))
+@pytest.mark.parametrize("name", sorted(SCALAR_PROPERTIES))
+def test_property_in_another_style_is_refused(run, name, style):
+    """A property of the model given as vector, peratomtype or peratomtypepair stops at its fix
+    property/global command with an ERROR naming the fix, the property and the style."""
+    kept = [line for line in GOOD.splitlines() if f" {name} " not in line]
+    script = "\n".join(kept).replace(
+        "pair_style gran", f"fix m9 all property/global {name} {style} "
+        + OTHER_STYLES[style].format(v=SCALAR_PROPERTIES[name]) + "\npair_style gran")
+    run.lig(script, check=False)
+    error = next((line for line in run.log.splitlines() if line.startswith("ERROR")), "")
+    assert f"fix m9 property/global {name}: style {style} is not allowed; {name} must be scalar" in error, error
+
+
 def test_good_input_runs(run):
     assert run.lig(GOOD)["e"] > 0.0
 

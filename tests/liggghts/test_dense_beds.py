@@ -18,7 +18,9 @@ step 0.005 R / U = 5e-4 s. LIGGGHTS tallies no spring energy, so three checks:
   sample to 1e-9 E0 (measured at most 1.2e-11 E0; the round-off of different summation orders
   grows through the contacts), while the LAMMPS total with the spring energy never rises.
 """
+import math
 import pathlib
+import re
 
 import pytest
 
@@ -268,6 +270,56 @@ def test_too_short_a_contact_stops_with_an_error(run, packings, duration, named,
     else:
         assert "a timestep <=" in message
     assert "Lost atoms" not in err.value.log
+
+
+SETTLING_N_C_1 = """atom_style granular
+atom_modify map array
+communicate single vel yes
+newton off
+units si
+boundary p p f
+region box block 0 0.012 0 0.012 0 0.06 units box
+create_box 2 box
+neighbor 5e-4 bin
+neigh_modify delay 0
+fix m1 all property/global coefficientRestitution peratomtypepair 2 0.9 0.9 0.9 0.9
+fix m3 all property/global lubricatedContactSteps scalar 1
+pair_style gran model lubricated
+pair_coeff * *
+fix floor all wall/gran model lubricated primitive type 2 zplane 0.0
+lattice bcc 0.0030 origin 0.25 0.25 0.25
+region fill block 0 0.012 0 0.012 0.004 0.05 units box
+create_atoms 1 region fill
+set group all diameter 2e-3 density 2500
+displace_atoms all random 2e-4 2e-4 2e-4 15485863 units box
+fix nve all nve/sphere
+fix weight all gravity 9.81 vector 0 0 -1
+timestep 1e-5
+run 3500
+"""
+
+
+def network_bound_load(n, e=0.9):
+    """The load that bounds a LIGGGHTS contact lasting n steps (contact_network.h): the larger of
+    the exact normal contact's and the sampled tangential spring's (kt = 2/7 k on 2/7 m_e)."""
+    m = max(n, 1.5)
+    big_e, cos = e ** (1.0 / m), math.cos(math.pi / m)
+    log_e = math.log(e)
+    return max(3.0 - big_e ** 2 - 2.0 * big_e * cos, (math.pi ** 2 + log_e ** 2) / n ** 2 - 4.0 * log_e / n)
+
+
+def test_advised_duration_is_longer_and_passes(run):
+    """A settling bcc bed at N_c = 1 (the probe's): pairs of spheres touch with the upper bound
+    10.3 of the sampled tangential spring's load. The WARNING advised "lubricatedContactSteps >= 1",
+    the duration in use (its advice left out that load and rounded down); now a longer one, under
+    which that bound (per unit load, from the printed upper bound, rounded down) is below 4."""
+    run.lig(SETTLING_N_C_1)
+    warning = next(line for line in run.log.splitlines() if "likely unstable" in line)
+    upper = float(re.search(r"reach the upper bound ([0-9.e+]+) >= 4", warning).group(1))
+    advised = float(re.search(r"use lubricatedContactSteps >= ([0-9.e+]+) ", warning).group(1))
+    assert "lubricatedContactSteps = 1 " in warning and advised > 1.0, warning
+    unit_upper = upper * (1.0 - 5e-3) / network_bound_load(1.0)
+    assert network_bound_load(advised) * unit_upper < 4.0, warning
 
 
 def test_a_long_enough_contact_runs(run, packings):
