@@ -48,9 +48,7 @@ void FixLubricatedWall::init_model(const char *style, const std::string &what)
   reset_dt();
   // Under fix nve/sphere/midpoint the step-exact integration uses the velocity over the last
   // step, which that fix provides (see pair_style lubricated/springdashpot).
-  midpoint = nullptr;
-  for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
-    midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
+  midpoint = FixNVESphereMidpoint::in_use(lmp, style);
   step_velocity = midpoint ? nullptr : dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
   pair = dynamic_cast<PairLubricatedSpringDashpot *>(force->pair_match("lubricated/springdashpot", 1));
   contact_mass.init(style, !pair);    // the pair style logs them where there is one

@@ -22,6 +22,7 @@
 #include "comm.h"
 #include "error.h"
 #include "memory.h"
+#include "modify.h"
 #include "update.h"
 
 #include <cstring>
@@ -49,6 +50,28 @@ FixNVESphereMidpoint::FixNVESphereMidpoint(LAMMPS *lmp, int narg, char **arg) : 
   atom->add_callback(Atom::RESTART);
   for (int i = 0; i < atom->nlocal; i++)
     set_arrays(i);
+}
+
+FixNVESphereMidpoint *FixNVESphereMidpoint::in_use(LAMMPS *lmp, const char *who)
+{
+  FixNVESphereMidpoint *midpoint = nullptr;
+  Fix *other = nullptr;
+  for (Fix *fix : lmp->modify->get_fix_list()) {
+    if (!fix->time_integrate) continue;
+    auto *candidate = dynamic_cast<FixNVESphereMidpoint *>(fix);
+    if (candidate && !midpoint)
+      midpoint = candidate;
+    else if (!other)
+      other = fix;
+  }
+  if (midpoint && other)
+    lmp->error->all(FLERR,
+                    "{}: fix {} (nve/sphere/midpoint) must be the only time integration: fix {} ({}) moves "
+                    "atoms too, and their contacts would take the velocities of the run's set-up (the "
+                    "contacts take every atom's step velocity from the midpoint fix); integrate all moving "
+                    "spheres with one fix nve/sphere/midpoint, or use fix nve/sphere for all",
+                    who, midpoint->id, other->id, other->style);
+  return midpoint;
 }
 
 FixNVESphereMidpoint::~FixNVESphereMidpoint()

@@ -39,6 +39,12 @@ class FixNVESphereMidpoint : public Fix {
   int maxsize_restart() override;
 
  public:
+  // The instance whose step velocities the contact styles take (`who`, for the message), or
+  // nullptr where there is none. Its rows hold the step velocity of the atoms it integrates;
+  // another time integration beside it (fix nve/sphere, rigid, move, a second instance) moves
+  // atoms whose rows keep their set-up velocity, which their contacts would take: an ERROR.
+  static FixNVESphereMidpoint *in_use(class LAMMPS *lmp, const char *who);
+
   // V^n of owned and ghost atoms during a step: the velocity over the last step of the
   // force-evaluation points X~ (X~^n - X~^(n-1) = dt V^n), which the step-exact contact of
   // pair_style lubricated/springdashpot needs in place of the extrapolated V~.

@@ -262,9 +262,7 @@ void PairLubricatedSpringDashpot::init_style()
 
   // Under fix nve/sphere/midpoint forces are evaluated with the extrapolated V~; the step-exact
   // integration needs the velocity over the last step instead, which that fix provides.
-  midpoint = nullptr;
-  for (auto &ifix : modify->get_fix_by_style("^nve/sphere/midpoint$"))
-    midpoint = dynamic_cast<FixNVESphereMidpoint *>(ifix);
+  midpoint = FixNVESphereMidpoint::in_use(lmp, STYLE);
   // Under velocity Verlet a run's set-up continues the last run's steps where it can.
   step_velocity = midpoint ? nullptr : FixStepVelocity::find_or_create(lmp);
 

@@ -173,6 +173,22 @@ CASES = {
     "wall_tcontact_too_many_steps": (script(fix="fix w all wall/lubrication 0.9 tcontact 100 zplane 0.0 NULL"),
                                      ["Fix wall/lubrication", "tcontact = 100 is out of range with the time "
                                       "step 1e-05", "1 <= N_c <= 1e6"]),
+    # The contacts take every atom's step velocity from the midpoint fix; atoms another fix moves
+    # kept their set-up velocity there (a pair rebounded with 0.94 for e_d = 0.9; a sphere under
+    # fix nve/sphere left a wall with 1.00002 for 0.8).
+    "midpoint_beside_nve_sphere": (script(fix="group one id 1\nfix a one nve/sphere/midpoint\n"
+                                              "fix b all nve/sphere"),
+                                   ["Pair style lubricated/springdashpot", "fix a (nve/sphere/midpoint) must be the "
+                                    "only time integration", "fix b (nve/sphere) moves atoms too"]),
+    "two_midpoint_fixes": (script(fix="group one id 1\nfix a one nve/sphere/midpoint\nfix b all nve/sphere/midpoint"),
+                           ["fix a (nve/sphere/midpoint) must be the only time integration",
+                            "fix b (nve/sphere/midpoint) moves atoms too"]),
+    "wall_midpoint_beside_nve_sphere": (script("pair_coeff * * 0.9", fix="fix w all wall/lubrication 0.9 zplane 0.0 "
+                                               "NULL\nfix b all nve/sphere\nfix a all nve/sphere/midpoint")
+                                        .replace("pair_style lubricated/springdashpot\npair_coeff * * 0.9\n",
+                                                 "pair_style gran/hooke 2e3 NULL 50 NULL 0 0\npair_coeff * *\n"),
+                                        ["Fix wall/lubrication: fix a (nve/sphere/midpoint) must be the only time "
+                                         "integration", "fix b (nve/sphere) moves atoms too"]),
 }
 
 
