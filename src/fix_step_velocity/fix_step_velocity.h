@@ -54,6 +54,8 @@ class FixStepVelocity : public Fix {
   // Whether this set-up continues the last run's steps; then the last step's velocities of
   // owned and ghost atoms (nmax x 3, contiguous like atom->v and atom->omega).
   bool continues() const { return continuing && update->setupflag; }
+  // Whether fix nve/sphere is the run's only time integration (the scheme the kicks undo).
+  bool integrated_by_nve_sphere() const;
   double **velocity() { return vhalf; }
   double **spin() { return whalf; }
 
@@ -66,7 +68,6 @@ class FixStepVelocity : public Fix {
   bool continuable = false;    // the last run ended with a step of fix nve/sphere
   bool continuing = false;     // this set-up continues it
   double step_dt = 0.0;        // the time step of those steps
-  bool integrated_by_nve_sphere() const;
   void store_kick(int i);
 };
 

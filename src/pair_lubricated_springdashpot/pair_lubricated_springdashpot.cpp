@@ -265,6 +265,7 @@ void PairLubricatedSpringDashpot::init_style()
   midpoint = FixNVESphereMidpoint::in_use(lmp, STYLE);
   // Under velocity Verlet a run's set-up continues the last run's steps where it can.
   step_velocity = midpoint ? nullptr : FixStepVelocity::find_or_create(lmp);
+  verlet_velocities = step_velocity && step_velocity->integrated_by_nve_sphere();
 
   // The vectorised loops need the step velocity in v and exactly integrated normal forces;
   // type pairs with other coefficients are grouped by type pair (vector_forces).
@@ -419,6 +420,7 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
   // A set-up that continues the last run evaluates as its last step did (fix_step_velocity.h);
   // not with rigid bodies or immovable atoms, whose velocities the reconstruction does not know.
   continued = step_velocity && step_velocity->continues() && !inverse_mass_on;
+  step_velocities_used = !update->setupflag || continued;
   if (inverse_mass_on && (neighbor->ago == 0 || update->setupflag)) update_inverse_mass();
   if (!film_budget)
     film_budget_now = false;
@@ -463,10 +465,23 @@ double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, d
   const lub::NormalModel &model = models[index(itype, jtype)].normal;
   if (rsq == 0.0) return 0.0;
 
-  double **x = atom->x, **v = atom->v;
+  // The velocities the last evaluation took: after a step of fix nve/sphere (or a set-up that
+  // continued one) velocity Verlet's v^(n+1/2), while compute pair/local and dumps see an owned
+  // atom's v^(n+1) = v^(n+1/2) + dt/2 f/m (f that evaluation's) and a ghost's v^(n+1/2) of the
+  // step's communication; after a fresh set-up, or under other integrators, v as it is.
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  // A set-up that continued took the velocities fix LUBRICATED_STEP_VELOCITY restored (owned
+  // and ghost atoms), which it keeps until the next step.
+  const bool half_kick = verlet_velocities && step_velocities_used;
+  double **restored = continued && step_velocity ? step_velocity->velocity() : nullptr;
+  const double dtf = 0.5 * update->dt * force->ftm2v;
+  auto step_v = [&](int k, int d) {
+    if (restored) return restored[k][d];
+    return half_kick && k < atom->nlocal ? v[k][d] - dtf * f[k][d] / atom->rmass[k] : v[k][d];
+  };
   double u_n = 0.0;
   for (int d = 0; d < 3; d++)
-    u_n += (v[i][d] - v[j][d]) * (x[i][d] - x[j][d]);
+    u_n += (step_v(i, d) - step_v(j, d)) * (x[i][d] - x[j][d]);
   u_n /= r;
   if (!model.acts(r - radsum, lub_radius, u_n)) return 0.0;
   const double m_e = inverse_mass_on ? lub::reduced_mass_of_inverses(inverse_mass[i], inverse_mass[j])

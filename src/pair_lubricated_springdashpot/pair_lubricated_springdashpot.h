@@ -63,6 +63,8 @@ class PairLubricatedSpringDashpot : public Pair {
   std::string history_slot_id() const { return history_id + "_SLOT"; }
   class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
   class FixStepVelocity *step_velocity = nullptr;    // the last step's velocities for a set-up
+  bool verlet_velocities = false;                    // fix nve/sphere integrates all (single())
+  bool step_velocities_used = false;                 // the last evaluation took v^(n+1/2)
   bool continued = false;                            // this set-up continues the last run
   // List entries kept by eval's first pass: i, j and (with friction, for the history) jj.
   std::vector<int> candidate_i, candidate_j, candidate_jj;

@@ -91,6 +91,66 @@ def test_single_reports_the_film_of_unequal_spheres(lmp, integration):
         assert lubrication != pytest.approx(expected, rel=1e-6)
 
 
+COLLISION = scenes.HEADER.replace("${newton}", "{newton}") + """
+boundary p p p
+region box block -0.01 0.01 -0.01 0.01 -0.01 0.01
+create_box 1 box
+create_atoms 1 single {x1} 0 0
+create_atoms 1 single {x2} 0.0003 0
+set atom * diameter 0.002 density 8000
+velocity all set 0 0 0
+set atom 1 vx 0.05
+set atom 2 vx -0.05
+pair_style lubricated/springdashpot
+pair_coeff * * 0.5 ncontact 16 {film}
+fix nve all nve/sphere
+timestep 5e-6
+neighbor 0.0005 bin
+compute pl all pair/local dist p1 p2
+compute sum all reduce sum c_pl[2] c_pl[3] inputs local
+variable applied equal sqrt(fx[1]^2+fy[1]^2+fz[1]^2)
+variable reported equal abs(c_sum[1]+c_sum[2])
+thermo_style custom step v_applied v_reported
+thermo_modify format float %.15g
+thermo 10
+run 425
+thermo 1
+run 40
+"""
+
+
+def collision_rows(log):
+    """(applied, reported) of each step of the second run (thermo 1)."""
+    rows = log.split("Step")[-1].split("Loop time")[0].splitlines()[1:]
+    return [(float(r.split()[1]), float(r.split()[2])) for r in rows if r.split() and r.split()[0].isdigit()]
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+@pytest.mark.parametrize("newton", ["on", "off"])
+@pytest.mark.parametrize("where", ["inside", "across the periodic boundary"])
+@pytest.mark.parametrize("film", ["", "viscosity 1e-3 activation 0.05"], ids=["dry", "wet"])
+def test_pair_local_reports_the_force_the_step_applied(lmp, nprocs, newton, where, film):
+    """compute pair/local at the end of each step of a collision (e_d = 0.5, N_c = 16; wet: the
+    film's approach and rebound too) gives the normal force the step applied: single() takes the
+    step's velocity, v - dt/2 f/m for an owned atom after fix nve/sphere's second half kick (it
+    took v^(n+1): p1 4 % off, 2 % across the periodic boundary, whose ghost held v^(n+1/2)).
+    An oblique impact (the spheres offset by 0.3 R), so the applied force has no tangential part
+    only because the pair is frictionless: |f| = |p1 + p2|. Not reported: the step at which a
+    dry contact ends within the step, the pair then beyond compute pair/local's cutoff."""
+    x1, x2 = (-0.0011, 0.0011) if where == "inside" else (0.0089, -0.0089)
+    script = COLLISION
+    for key, value in (("{newton}", newton), ("{x1}", repr(x1)), ("{x2}", repr(x2)), ("{film}", film)):
+        script = script.replace(key, value)
+    lmp(script, nprocs=nprocs)
+    rows = collision_rows(lmp.log)
+    assert len(rows) == 41
+    acting = [(a, r) for a, r in rows if a > 0.0 and r > 0.0]
+    assert len(acting) >= 16    # the contact (N_c = 16 steps) and, wet, the film
+    for applied, reported in acting:
+        assert reported == pytest.approx(applied, rel=1e-9)
+    assert all(r == 0.0 or a > 0.0 for a, r in rows)
+
+
 def neighbor_info(log):
     return log[log.index("Neighbor list info"):log.index("Per MPI rank memory")]
 
