@@ -41,15 +41,18 @@ void FixFluidDrag::parse(int narg, char **arg)
     if (key == "viscosity") {
       need(iarg, 1);
       model.viscosity = number(iarg + 1);
-      if (!(model.viscosity > 0.0))
-        error->all(FLERR, "{}: viscosity = {} is out of range (allowed: mu_f > 0)", STYLE, arg[iarg + 1]);
+      // The pair style's range: beyond it the history kernel's sums over- or underflow (NaN).
+      if (!(model.viscosity >= 1e-100 && model.viscosity <= 1e100))
+        error->all(FLERR, "{}: viscosity = {} is out of range (allowed: 1e-100 <= mu_f <= 1e100)", STYLE,
+                   arg[iarg + 1]);
       have_viscosity = true;
       iarg += 2;
     } else if (key == "density") {
       need(iarg, 1);
       model.density = number(iarg + 1);
-      if (!(model.density >= 0.0))
-        error->all(FLERR, "{}: density = {} is out of range (allowed: rho_f >= 0)", STYLE, arg[iarg + 1]);
+      if (!(model.density == 0.0 || (model.density >= 1e-100 && model.density <= 1e100)))
+        error->all(FLERR, "{}: density = {} is out of range (allowed: rho_f = 0 or 1e-100 <= rho_f <= 1e100)", STYLE,
+                   arg[iarg + 1]);
       iarg += 2;
     } else if (key == "law") {
       need(iarg, 1);

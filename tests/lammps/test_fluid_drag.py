@@ -82,8 +82,12 @@ def test_fluid_velocity_from_variables(lmp):
 
 
 @pytest.mark.parametrize("extra,fragment", [
-    ("density -1", "density = -1 is out of range (allowed: rho_f >= 0)"),
-    ("viscosity -1e-3", "viscosity = -1e-3 is out of range (allowed: mu_f > 0)"),
+    ("density -1", "density = -1 is out of range (allowed: rho_f = 0 or 1e-100 <= rho_f <= 1e100)"),
+    ("density 1e300", "density = 1e300 is out of range"),
+    ("viscosity -1e-3", "viscosity = -1e-3 is out of range (allowed: 1e-100 <= mu_f <= 1e100)"),
+    # beyond these the history kernel gave NaN forces (1e-300 with mei-adrian, 1e308 with added mass)
+    ("viscosity 1e-300", "viscosity = 1e-300 is out of range"),
+    ("viscosity 1e308", "viscosity = 1e308 is out of range"),
     ("velocity v_nothing 0 0", "variable nothing for the fluid velocity does not exist"),
     ("hindrance richardson-zaki 4.65", "need the bins keyword"),
     ("hindrance richardson-zaki 0.5 bins 1 1 4", "richardson-zaki n = 0.5 is out of range"),
