@@ -92,11 +92,13 @@ void FixLubricatedWall::min_post_force(int /*vflag*/)
   compute_walls(false);
 }
 
+// At the start of each evaluation: its outputs and its sustained contacts.
 void FixLubricatedWall::clear_sums()
 {
   for (double &s : local_sums)
     s = 0.0;
   sums_reduced = false;
+  sustained.clear();
 }
 
 double FixLubricatedWall::compute_scalar()

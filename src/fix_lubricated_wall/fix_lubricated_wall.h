@@ -10,7 +10,9 @@
 #ifndef LMP_FIX_LUBRICATED_WALL_H
 #define LMP_FIX_LUBRICATED_WALL_H
 
+#include "atom.h"
 #include "fix.h"
+#include "update.h"
 
 #include "contact_mass/contact_mass.h"
 #include "lubricated/contact.h"
@@ -45,6 +47,18 @@ class FixLubricatedWall : public Fix {
   // Adds to each owned atom the bound on its wet walls' film shares (film_budget.h).
   virtual void add_film_share_bounds(double *bound, int nlocal) const = 0;
 
+  // The contacts of the last evaluation in overlap then and a step before (sustained), for the
+  // pair style's contact-network check (lubricated/contact_network.h): the atom's ID and the
+  // wall's normal. Recorded by ID: a dry wall's are the last step's, whose atoms a rebuild may
+  // have reordered since.
+  struct SustainedContact {
+    tagint tag;
+    double n[3];
+  };
+  const std::vector<SustainedContact> &sustained_contacts() const { return sustained; }
+  const lubricated::ContactModel &contact_model() const { return model; }
+  const lubricated::Coefficients &coefficients() const { return coeffs; }
+
  protected:
   lubricated::Coefficients coeffs;
   lubricated::ContactModel model;                    // derived from coeffs and dt
@@ -63,6 +77,11 @@ class FixLubricatedWall : public Fix {
   // Immovable atoms (skipped: the wall cannot move them) and rigid bodies (m_e = M_body).
   ContactMass contact_mass;
   std::vector<double> inverse_mass;
+  std::vector<SustainedContact> sustained;
+  void record_sustained(int i, double gap, double u_n, const lubricated::Vec3 &n)
+  {
+    if (gap < 0.0 && gap - u_n * update->dt < 0.0) sustained.push_back({atom->tag[i], {n.x, n.y, n.z}});
+  }
   // energy, then the vector's sums (at most 6), this rank's and all ranks'
   static constexpr int MAX_SUMS = 7;
   double local_sums[MAX_SUMS] = {}, global_sums[MAX_SUMS] = {};

@@ -186,6 +186,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
                           double mass, double *h) __attribute__((noinline))
   {
     const double r = radius[i];
+    record_sustained(i, at.gap, u_n, at.n);
     lub::ContactPoint p;
     p.gap = at.gap, p.u_n = u_n, p.reduced_mass = mass, p.film = lub::FilmRadius(film_radius);
     lub::HistorySlot slot;

@@ -274,6 +274,7 @@ void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, 
       continue;
     }
     double *h = history ? history_slot(i, c.iwall) : nullptr;
+    record_sustained(i, gap, rel.u_n, n);
 
     lub::ContactPoint p;
     p.gap = gap, p.u_n = rel.u_n, p.reduced_mass = mass, p.film = film;

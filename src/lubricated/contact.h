@@ -9,6 +9,7 @@
 // inertia_j = 0, reduced radius R_i. Conventions of n, gap, u_n and m_e: normal_model.h.
 #pragma once
 
+#include "contact_network.h"
 #include "film_budget.h"
 #include "normal_model.h"
 #include "tangential.h"
@@ -150,6 +151,19 @@ contact_forces(const ContactModel &m, const ContactPoint &p, HistorySlot &histor
   const Vec3 torque_i = plus(scaled(nxf, -p.radius_i), roll);
   const Vec3 torque_j = wall ? Vec3{} : minus(scaled(nxf, -p.radius_j), roll);
   return ContactForces{normal, f, torque_i, torque_j, shear, shear_torque_i, s, m_t};
+}
+
+// Loads of a sustained contact of this model for the contact-network check (contact_network.h):
+// kappa + 2 gamma of the normal per-step constants (exact or sampled), and for the upper bound
+// the larger of it and the tangential spring's (friction). The pair style's type pairs and the
+// walls of the wall fixes alike.
+inline void network_loads(const ContactModel &model, double dt, double &load, double &bound)
+{
+  const NormalModel &m = model.normal;
+  load = m.exact ? contact_load(m.step.stiffness_step, m.step.damping_step, dt)
+                 : contact_load(m.contact.stiffness_per_mass, m.contact.damping_per_mass, dt);
+  const TangentialModel &tm = model.tangential;
+  bound = tm.contact_active() ? std::max(load, contact_load(tm.stiffness_step, tm.damping_step, dt)) : load;
 }
 
 }    // namespace lubricated

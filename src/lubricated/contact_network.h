@@ -47,7 +47,9 @@
 // the checks count it as sustained, which at N_c <= 2 (every contact predicted to leave within a
 // step) is every contact of a pressed bed. Contacts that slide (Coulomb) are softer; the films,
 // dampers on the velocity of the last step too, add to C (up to a load of 2 with the film
-// budget) and are not counted; nor are the walls of fix wall/lubrication.
+// budget) and are not counted. A wall is a partner of infinite mass (its contact's b_k lies on the
+// sphere alone: the terms of the second sphere drop out); the LAMMPS pair style counts the
+// contacts of the plugin's wall fixes so, the LIGGGHTS model not.
 #pragma once
 
 #include <algorithm>

@@ -80,7 +80,7 @@ inline ContactLoadModel contact_load_model(const Coefficients &c, bool sampled_t
 // sampled_tangential: the bound counts a tangential spring sampled with the normal constants
 // (the LIGGGHTS model's, contact_load_model).
 inline std::string network_message(const std::string &style, const Coefficients &c, double dt, const NetworkFinding &f,
-                                   bool sampled_tangential = false)
+                                   bool sampled_tangential = false, const std::string &wall = "")
 {
   using detail::number;
   using detail::number3;
@@ -98,9 +98,14 @@ inline std::string network_message(const std::string &style, const Coefficients 
   const std::string remedy = c.t_contact > 0.0 ? "a longer tcontact or a timestep <= " + number3(dt_needed) +
                                                      " (N_c >= " + number3(needed) + ")"
                                                : "ncontact >= " + number3(needed);
-  const std::string atoms = "atoms " + std::to_string(f.tag_i) + " (" + number(f.contacts_i) + " contacts) and " +
-                            std::to_string(f.tag_j) + " (" + number(f.contacts_j) + ")";
-  const std::string types = style + " types " + std::to_string(f.type_i) + " " + std::to_string(f.type_j) + ": ";
+  // wall: the worst contact is a sphere's with a wall (the finding's tag_i, type_j), so named.
+  const std::string atoms =
+      wall.empty() ? "atoms " + std::to_string(f.tag_i) + " (" + number(f.contacts_i) + " contacts) and " +
+                         std::to_string(f.tag_j) + " (" + number(f.contacts_j) + ")"
+                   : "atom " + std::to_string(f.tag_i) + " (" + number(f.contacts_i) + " contacts) and " + wall;
+  const std::string types = wall.empty()
+                                ? style + " types " + std::to_string(f.type_i) + " " + std::to_string(f.type_j) + ": "
+                                : style + " type " + std::to_string(f.type_j) + " and " + wall + ": ";
   if (f.unstable)
     return types + duration + " is too short a contact for this packing: the contacts of " + atoms +
            " have a mode that grows every step (load " + number3(f.load) +

@@ -394,13 +394,8 @@ void PairLubricatedSpringDashpot::update_models()
 // constants, and the larger of it and the tangential spring's (friction) for the upper bound.
 void PairLubricatedSpringDashpot::set_network_loads(int i, int j)
 {
-  const lub::NormalModel &m = models[index(i, j)].normal;
-  const double dt = update->dt;
-  const double load = m.exact ? lub::contact_load(m.step.stiffness_step, m.step.damping_step, dt)
-                              : lub::contact_load(m.contact.stiffness_per_mass, m.contact.damping_per_mass, dt);
-  const lub::TangentialModel &tm = models[index(i, j)].tangential;
-  const double bound =
-      tm.contact_active() ? std::max(load, lub::contact_load(tm.stiffness_step, tm.damping_step, dt)) : load;
+  double load, bound;
+  lub::network_loads(models[index(i, j)], update->dt, load, bound);
   network_load[index(i, j)] = network_load[index(j, i)] = load;
   network_bound[index(i, j)] = network_bound[index(j, i)] = bound;
   network_check = network_check || bound > lub::network_check_load;
@@ -421,6 +416,7 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
   // not with rigid bodies or immovable atoms, whose velocities the reconstruction does not know.
   continued = step_velocity && step_velocity->continues() && !inverse_mass_on;
   step_velocities_used = !update->setupflag || continued;
+  if (update->setupflag) find_network_walls();
   if (inverse_mass_on && (neighbor->ago == 0 || update->setupflag)) update_inverse_mass();
   if (!film_budget)
     film_budget_now = false;

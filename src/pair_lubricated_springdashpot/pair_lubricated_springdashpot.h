@@ -154,6 +154,17 @@ class PairLubricatedSpringDashpot : public Pair {
   std::vector<int> network_i, network_j;
   void set_network_loads(int itype, int jtype);
   void check_contact_network(int ncandidate);
+  // The plugin's wall fixes, whose sustained contacts join the check (found at each set-up; a
+  // wall whose load exceeds network_check_load turns the check on too), and this check's wall
+  // contacts: owned atom, normal, wall fix.
+  std::vector<class FixLubricatedWall *> network_walls;
+  bool network_walls_check = false;
+  struct WallContact {
+    int i, wall;
+    double n[3];
+  };
+  std::vector<WallContact> network_wall_contacts;
+  void find_network_walls();
 
   void allocate();
   int ntypes_alloc = 0;

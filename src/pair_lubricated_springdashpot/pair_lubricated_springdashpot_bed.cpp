@@ -31,6 +31,7 @@
 #include <cmath>
 #include <set>
 #include <string>
+#include <unordered_map>
 
 using namespace LAMMPS_NS;
 namespace lub = lubricated;
@@ -261,6 +262,21 @@ void PairLubricatedSpringDashpot::finish_shear_film_budget()
   }
 }
 
+// The wall fixes of the plugin (at each set-up, after they were initialised): their sustained
+// contacts join the check, which a wall whose load exceeds network_check_load turns on.
+void PairLubricatedSpringDashpot::find_network_walls()
+{
+  network_walls.clear();
+  network_walls_check = false;
+  for (Fix *fix : modify->get_fix_list())
+    if (auto *wall = dynamic_cast<FixLubricatedWall *>(fix)) {
+      network_walls.push_back(wall);
+      double load, bound;
+      lub::network_loads(wall->contact_model(), update->dt, load, bound);
+      network_walls_check = network_walls_check || bound > lub::network_check_load;
+    }
+}
+
 // The network of contacts (lubricated/contact_network.h): per-atom sums over the contacts in
 // overlap now and a step ago among the pairs pass 1 kept, then each contact's lower quotient and
 // upper row. A lower quotient of 4 or more proves a mode that grows every step: ERROR. Where the
@@ -312,10 +328,40 @@ void PairLubricatedSpringDashpot::check_contact_network(int ncandidate)
   }
   comm_what = COMM_NETWORK;
   if (newton_pair) comm->reverse_comm(this);
+  // The walls' sustained contacts (their last evaluation's, by atom ID): a partner of infinite
+  // mass, on the owned atom's sums alone, before they go to the ghosts.
+  network_wall_contacts.clear();
+  std::vector<double> wall_load(network_walls.size()), wall_bound(network_walls.size());
+  std::unordered_map<tagint, int> owned;
+  for (std::size_t w = 0; w < network_walls.size(); w++) {
+    lub::network_loads(network_walls[w]->contact_model(), dt, wall_load[w], wall_bound[w]);
+    const auto &records = network_walls[w]->sustained_contacts();
+    if (!records.empty() && owned.empty())
+      for (int i = 0; i < nlocal; i++)
+        owned.emplace(atom->tag[i], i);
+    for (const auto &record : records) {
+      const auto found = owned.find(record.tag);
+      if (found == owned.end() || !std::isfinite(mass(found->second))) continue;    // moved on; immovable
+      const int i = found->second;
+      lub::add_network_contact(&network_sums[nv * i], wall_load[w], wall_bound[w], mass(i), record.n);
+      network_wall_contacts.push_back({i, static_cast<int>(w), {record.n[0], record.n[1], record.n[2]}});
+    }
+  }
   comm->forward_comm(this);
 
-  // Each contact's bounds; the worst over all ranks decides (contact_network_ranks.h).
+  // Each contact's bounds; the worst over all ranks decides (contact_network_ranks.h). A wall
+  // contact has no second sphere: zero sums and an infinite mass drop its terms.
   lub::NetworkScores scores(comm->me);
+  const double no_sums[nv] = {};
+  const int npairs = static_cast<int>(network_i.size());
+  for (std::size_t k = 0; k < network_wall_contacts.size(); k++) {
+    const WallContact &c = network_wall_contacts[k];
+    const double *si = &network_sums[nv * c.i];
+    scores.add(npairs + static_cast<int>(k),
+               lub::network_lower_quotient(wall_load[c.wall], mass(c.i), c.n, si, mass(c.i), no_sums, INFINITY),
+               lub::network_upper_row(wall_bound[c.wall], mass(c.i), si, mass(c.i), no_sums, INFINITY),
+               wall_bound[c.wall]);
+  }
   for (std::size_t k = 0; k < network_i.size(); k++) {
     const int i = network_i[k], j = network_j[k], t = index(type[i], type[j]);
     double n[3];
@@ -328,7 +374,16 @@ void PairLubricatedSpringDashpot::check_contact_network(int ncandidate)
                lub::network_upper_row(network_bound[t], m_e, si, mass(i), sj, mass(j)), network_bound[t]);
   }
   lub::NetworkFinding found;
+  // A wall contact is described as the atom and "type" -(w + 1), the wall fix's place in
+  // network_walls (the finding sorts the types: it comes first).
   auto describe = [&](int k, int *types, long long *tags, double *contacts) {
+    if (k >= npairs) {
+      const WallContact &c = network_wall_contacts[k - npairs];
+      types[0] = type[c.i], types[1] = -(c.wall + 1);
+      tags[0] = static_cast<long long>(atom->tag[c.i]), tags[1] = 0;
+      contacts[0] = network_sums[nv * c.i + nv - 1], contacts[1] = 0.0;
+      return;
+    }
     const int ij[2] = {network_i[k], network_j[k]};
     for (int s = 0; s < 2; s++) {
       types[s] = type[ij[s]];
@@ -337,7 +392,14 @@ void PairLubricatedSpringDashpot::check_contact_network(int ncandidate)
     }
   };
   if (!scores.decide(world, network_warned, describe, found)) return;
-  const std::string message = lub::network_message(STYLE, coeffs[index(found.type_i, found.type_j)], update->dt, found);
+  std::string message;
+  if (found.type_i < 0) {
+    const FixLubricatedWall *wall = network_walls[-found.type_i - 1];
+    message = lub::network_message(STYLE, wall->coefficients(), update->dt, found, false,
+                                   fmt::format("the walls of fix {} ({})", wall->id, wall->style));
+  } else {
+    message = lub::network_message(STYLE, coeffs[index(found.type_i, found.type_j)], update->dt, found);
+  }
   if (found.unstable) error->all(FLERR, message);
   if (comm->me == 0) error->warning(FLERR, message);
 }

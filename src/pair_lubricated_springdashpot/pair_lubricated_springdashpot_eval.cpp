@@ -272,7 +272,8 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   update_step_reach(v);
   // The contact-network check reads the step's candidates at once: on its steps pass 1 selects
   // the whole list in one piece.
-  const bool network_due = network_check && !update->setupflag && update->ntimestep >= network_next;
+  const bool network_due =
+      (network_check || network_walls_check) && !update->setupflag && update->ntimestep >= network_next;
   if (network_due) network_next = update->ntimestep + lub::network_check_interval;
   const int limit = network_due ? std::numeric_limits<int>::max() : pairs_per_piece;
   // One film reach for every type pair: pass 1 then looks up no types.
