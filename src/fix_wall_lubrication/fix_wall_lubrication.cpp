@@ -110,22 +110,6 @@ void FixWallLubrication::init()
   // Point particles are refused; with a grid spacing the smallest film radii have the largest
   // eps_al (at most 1, as activation); spheres must fit inside a cylinder.
   check_sphere_sizes();
-  find_gravity();
-}
-
-// Gravity presses a sphere onto a wall below it: the wall contact takes it as a steady load
-// b = -g . n (n from the wall to the sphere), which the integrator adds on top of the contact
-// (doc/model.rst, "Contacts under a steady load"). Other forces are not taken into account.
-void FixWallLubrication::find_gravity()
-{
-  gravity.clear();
-  if (!model.normal.exact) return;
-  for (Fix *other : modify->get_fix_list()) {
-    if (!utils::strmatch(other->style, "^gravity")) continue;
-    int dim = 0;
-    const auto *acceleration = static_cast<const double *>(other->extract("gvec", dim));
-    if (acceleration && dim == 1) gravity.push_back({acceleration, other->groupbit});
-  }
 }
 
 // A new time step: the per-step constants follow it; k and c stay (t_c settled at the first run,
@@ -270,10 +254,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
       // A centre behind the wall (a wall placed through or beyond the atoms) is not in contact:
       // the overlap would exceed a radius and launch the atom (warn_behind counts them).
       // Gravity on the atom along the normal, pressing it onto the wall where > 0.
-      double load = 0.0;
-      for (const Gravity &g : gravity)
-        if (mask[i] & g.groupbit)
-          load -= g.acceleration[0] * at.n.x + g.acceleration[1] * at.n.y + g.acceleration[2] * at.n.z;
+      const double load = gravity_load(i, at.n);
       if (at.gap >= -r && model.normal.acts(at.gap, film_radius, u_n, load))
         wall_contact(i, w, at, u_n, film_radius, mass, load, h);
       else if (h && h[3] != 0.0)

@@ -65,15 +65,6 @@ class FixWallLubrication : public FixLubricatedWall {
   void compute_walls(bool defer_films) override;
   void tally_film(int i, const lubricated::Vec3 &force, const lubricated::Vec3 &moment) override;
   void warn_behind();
-  // fix gravity of this run (init): its acceleration vector (read at each step: a variable
-  // gravity updates it) and group. The steps where a wall contact starts or ends follow the
-  // trajectory under it (lubricated/loaded_contact.h).
-  struct Gravity {
-    const double *acceleration;
-    int groupbit;
-  };
-  std::vector<Gravity> gravity;
-  void find_gravity();
 };
 
 }    // namespace LAMMPS_NS
