@@ -15,6 +15,7 @@
 #include "force.h"
 #include "modify.h"
 #include "update.h"
+#include "utils.h"
 
 #include <mpi.h>
 
@@ -53,6 +54,22 @@ void FixLubricatedWall::init_model(const char *style, const std::string &what)
   pair = dynamic_cast<PairLubricatedSpringDashpot *>(force->pair_match("lubricated/springdashpot", 1));
   contact_mass.init(style, !pair);    // the pair style logs them where there is one
   films_pending = false;
+  find_gravity();
+}
+
+// Gravity presses a sphere onto a wall below it: the wall contact takes it as a steady load
+// b = -g . n (n from the wall to the sphere), which the integrator adds on top of the contact.
+// Other forces are not taken into account.
+void FixLubricatedWall::find_gravity()
+{
+  gravity.clear();
+  if (!model.normal.exact) return;
+  for (Fix *other : modify->get_fix_list()) {
+    if (!utils::strmatch(other->style, "^gravity")) continue;
+    int dim = 0;
+    const auto *acceleration = static_cast<const double *>(other->extract("gvec", dim));
+    if (acceleration && dim == 1) gravity.push_back({acceleration, other->groupbit});
+  }
 }
 
 void FixLubricatedWall::setup_pre_force(int /*vflag*/)

@@ -17,6 +17,7 @@
 #include "contact_mass/contact_mass.h"
 #include "lubricated/contact.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -91,6 +92,34 @@ class FixLubricatedWall : public Fix {
   // At init: t_c settled, the set-up checked and described (`what` names the walls), the
   // integrator, the step-velocity fix, the pair style and the contact masses found.
   void init_model(const char *style, const std::string &what);
+  // fix gravity of this run (init_model): its acceleration vector (read at each step: a variable
+  // gravity updates it) and group. The steps where a wall contact starts or ends follow the
+  // trajectory under it (lubricated/loaded_contact.h, doc/model.rst "Contacts under a steady load").
+  struct Gravity {
+    const double *acceleration;
+    int groupbit;
+  };
+  std::vector<Gravity> gravity;
+  void find_gravity();
+  // Gravity on atom i along n (from the wall to the atom), as the contact's load: > 0 pressing
+  // the atom onto the wall.
+  double gravity_load(int i, const lubricated::Vec3 &n) const
+  {
+    double load = 0.0;
+    for (const Gravity &g : gravity)
+      if (atom->mask[i] & g.groupbit)
+        load -= g.acceleration[0] * n.x + g.acceleration[1] * n.y + g.acceleration[2] * n.z;
+    return load;
+  }
+  // The most gravity can move an atom towards a wall over a step, beyond |u_n| dt.
+  double gravity_reach(double dt) const
+  {
+    double sum = 0.0;
+    for (const Gravity &g : gravity)
+      sum += std::sqrt(g.acceleration[0] * g.acceleration[0] + g.acceleration[1] * g.acceleration[1] +
+                       g.acceleration[2] * g.acceleration[2]);
+    return sum * dt * dt;
+  }
   virtual void compute_walls(bool defer_films) = 0;
   // The deferred films, scaled by the atoms' film budget: the pair style's where it keeps one
   // (its loads include these walls), this fix's own without a lubricated pair style, none

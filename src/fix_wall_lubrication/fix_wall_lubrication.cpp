@@ -183,12 +183,13 @@ void FixWallLubrication::compute_walls(bool defer_films)
   // Atom i (contact mass `mass`) at wall w, gap and normal at p, where the contact acts. Out of
   // line: most atoms are far from the walls, and their loop stays short.
   auto wall_contact = [&](int i, const lub::WallSurface &w, const lub::WallPoint &at, double u_n, double film_radius,
-                          double mass, double *h) __attribute__((noinline))
+                          double mass, double load, double *h) __attribute__((noinline))
   {
     const double r = radius[i];
     record_sustained(i, at.gap, u_n, at.n);
     lub::ContactPoint p;
     p.gap = at.gap, p.u_n = u_n, p.reduced_mass = mass, p.film = lub::FilmRadius(film_radius);
+    p.load = load;
     lub::HistorySlot slot;
     if (tangential_on) {
       // The sphere's motion relative to the wall frame gives the slip at the contact point.
@@ -253,8 +254,10 @@ void FixWallLubrication::compute_walls(bool defer_films)
       double *h = history ? history[i] + k * HISTORY_PER_WALL : nullptr;
       // A centre behind the wall (a wall placed through or beyond the atoms) is not in contact:
       // the overlap would exceed a radius and launch the atom (warn_behind counts them).
-      if (at.gap >= -r && model.normal.acts(at.gap, film_radius, u_n))
-        wall_contact(i, w, at, u_n, film_radius, mass, h);
+      // Gravity on the atom along the normal, pressing it onto the wall where > 0.
+      const double load = gravity_load(i, at.n);
+      if (at.gap >= -r && model.normal.acts(at.gap, film_radius, u_n, load))
+        wall_contact(i, w, at, u_n, film_radius, mass, load, h);
       else if (h && h[3] != 0.0)
         for (int m = 0; m < HISTORY_PER_WALL; m++)
           h[m] = 0.0;
@@ -266,14 +269,19 @@ void FixWallLubrication::compute_walls(bool defer_films)
   constexpr int max_planes = 6;
   struct Plane {
     int axis, slot;
-    double side, position, shift, velocity;
+    double side, position, shift, velocity, load_reach;
   } planes[max_planes];
   bool planes_only = walls.size() <= max_planes;
   for (std::size_t k = 0; k < walls.size() && planes_only; k++) {
     const lub::WallSurface &w = walls[k];
     planes_only = !w.cylinder;
     const double s[3] = {shift.x, shift.y, shift.z}, u[3] = {wall_velocity.x, wall_velocity.y, wall_velocity.z};
-    planes[k] = {w.axis, static_cast<int>(k), static_cast<double>(w.side), w.position, s[w.axis], u[w.axis]};
+    // How far gravity may move an atom towards the plane over a step, beyond |u_n| dt.
+    double load_reach = 0.0;
+    for (const Gravity &g : gravity)
+      load_reach += std::fabs(g.acceleration[w.axis]) * dt * dt;
+    planes[k] = {w.axis,    static_cast<int>(k), static_cast<double>(w.side), w.position, s[w.axis],
+                 u[w.axis], load_reach};
   }
   const int nplanes = planes_only ? static_cast<int>(walls.size()) : 0;
 
@@ -328,7 +336,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
         const double r = radius[i];
         const double gap = w.side * (x_all[3 * i + w.axis] - w.position - w.shift) - r;
         const double u_n = w.side * (v_all[vw * i + w.axis] - w.velocity);
-        const bool acts = (gap >= -r) & (gap < grid_reach + eps_reach * r + std::fabs(u_n) * step_dt);
+        const bool acts = (gap >= -r) & (gap < grid_reach + eps_reach * r + std::fabs(u_n) * step_dt + w.load_reach);
         near[c] = acts ? 1.0 : near[c];
       }
       if (held)

@@ -239,7 +239,8 @@ void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, 
   const double wall_speed = std::sqrt(lub::dot(motion.velocity, motion.velocity)) +
                             std::sqrt(lub::dot(motion.spin, motion.spin)) * (std::sqrt(lub::dot(arm, arm)) + r);
   const double speed = std::sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]) + wall_speed;
-  const double cutoff = r + model.normal.reach(MAX_FILM_RATIO * r) + 2.0 * speed * update->dt;
+  const double cutoff =
+      r + model.normal.reach(MAX_FILM_RATIO * r) + 2.0 * speed * update->dt + gravity_reach(update->dt);
   const int nc = region->surface(xi[0], xi[1], xi[2], cutoff);
   if (nc > slots)
     error->one(FLERR, "{}: {} contacts of one atom with region {} (at most {})", STYLE, nc, region_id, slots);
@@ -269,7 +270,8 @@ void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, 
     } else {
       rel.u_n = vi[0] * n.x + vi[1] * n.y + vi[2] * n.z;
     }
-    if (!model.normal.acts(gap, film.value, rel.u_n)) {
+    const double load = gravity_load(i, n);    // gravity pressing the atom onto the face
+    if (!model.normal.acts(gap, film.value, rel.u_n, load)) {
       if (history) forget_slot(i, c.iwall);
       continue;
     }
@@ -277,7 +279,7 @@ void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, 
     record_sustained(i, gap, rel.u_n, n);
 
     lub::ContactPoint p;
-    p.gap = gap, p.u_n = rel.u_n, p.reduced_mass = mass, p.film = film;
+    p.gap = gap, p.u_n = rel.u_n, p.reduced_mass = mass, p.film = film, p.load = load;
     lub::HistorySlot slot;
     if (tangential_on) {
       p.n = n;

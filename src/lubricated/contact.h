@@ -37,6 +37,9 @@ struct ContactPoint {
   // Normal (normal_model.h): gap, the normal velocity over the last step, m_e, the film's R.
   double gap = 0.0, u_n = 0.0, reduced_mass = 0.0;
   FilmRadius film;
+  // A steady acceleration along n pressing the pair together, that the integrator adds (gravity
+  // onto a wall; normal_force's load): 0 for none.
+  double load = 0.0;
   // Tangential (tangential.h), read only where the model has tangential parts: the unit normal,
   // v_i - v_j and the spins as the engine holds them, the lever arms, R_e = R_i R_j / (R_i + R_j)
   // and the masses of the spheres that turn with the contact (solid spheres, for the rolling
@@ -98,7 +101,7 @@ template <bool TANGENTIAL, Partner PARTNER = Partner::particle> __attribute__((a
 contact_forces(const ContactModel &m, const ContactPoint &p, HistorySlot &history, Evaluation when = Evaluation::step,
                bool shear_apart = false)
 {
-  const NormalForce normal = normal_force(m.normal, p.gap, p.film, p.reduced_mass, p.u_n, when);
+  const NormalForce normal = normal_force(m.normal, p.gap, p.film, p.reduced_mass, p.u_n, when, p.load);
   if (!TANGENTIAL) {
     ContactForces out;
     out.normal = normal;

@@ -15,6 +15,7 @@
 
 #include "coefficients.h"
 #include "contact_step.h"
+#include "loaded_contact.h"
 #include "lubrication.h"
 #include "spring_dashpot.h"
 
@@ -39,6 +40,12 @@ struct NormalModel {
   bool acts(double gap, double radius, double u) const
   {
     return gap < reach(radius) + (exact ? std::fabs(u) * step.dt : 0.0);
+  }
+  // The same under a steady load b (loaded_contact.h): a pair that gravity may press into contact
+  // within the step.
+  bool acts(double gap, double radius, double u, double load) const
+  {
+    return gap < reach(radius) + (exact ? std::fabs(u) * step.dt + std::fabs(load) * step.dt * step.dt : 0.0);
   }
 
   // Largest gap (length) at which the model acts, for a contact of lubrication radius R.
@@ -160,10 +167,14 @@ inline Evaluation evaluation_of(bool setup, bool midpoint_integrator)
   return !setup ? Evaluation::step : midpoint_integrator ? Evaluation::midpoint_start : Evaluation::verlet_start;
 }
 
-// radius: the film's R (lubrication.h) with its inverse.
+// radius: the film's R (lubrication.h) with its inverse. load: a steady acceleration b along n that
+// presses the pair together (gravity onto a wall; b > 0 pressing), which the integrator adds on
+// top: the steps where a contact starts or ends then follow the forced trajectory (loaded_contact.h;
+// not at a midpoint start). 0: none, contact_step.h's forms.
 __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel &m, double gap,
                                                                const FilmRadius &radius, double reduced_mass,
-                                                               double u_n, Evaluation when = Evaluation::step)
+                                                               double u_n, Evaluation when = Evaluation::step,
+                                                               double load = 0.0)
 {
   const bool at_start = when != Evaluation::step;
   NormalForce f;
@@ -190,10 +201,11 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
       if (m.exact || when == Evaluation::midpoint_start) f.lubrication = std::max(-cap, std::min(cap, f.lubrication));
     }
   }
-  if (m.exact && contact_possible(gap, u_n, m.step.dt)) {
+  if (m.exact && (load == 0.0 ? contact_possible(gap, u_n, m.step.dt) : contact_possible(gap, u_n, m.step.dt, load))) {
     const ContactStep &cs = m.step;
     const double g0 = gap - u_n * cs.dt;
-    if (!at_start && in_sustained_contact(cs, gap, g0))    // inline: a spring-dashpot
+    const bool loaded = load != 0.0 && when != Evaluation::midpoint_start;
+    if (!at_start && !loaded && in_sustained_contact(cs, gap, g0))    // inline: a spring-dashpot
       f.contact = reduced_mass * sustained_acceleration(cs, gap, u_n);
     else if (when == Evaluation::midpoint_start) {
       // Only places the first drift (the contact and its entry loss act from the next step).
@@ -208,10 +220,12 @@ __attribute__((always_inline)) inline NormalForce normal_force(const NormalModel
       if (m.calibrated() && before >= 0.0)
         loss = entry_loss(m, radius, reduced_mass, gap >= 0.0 ? gap : g0), entry = &loss;
       if (at_start) {
-        f.contact = reduced_mass * contact_acceleration_at_start(cs, gap, u_n, entry);
+        f.contact = reduced_mass * (loaded ? loaded_contact_acceleration_at_start(cs, gap, u_n, load, entry)
+                                           : contact_acceleration_at_start(cs, gap, u_n, entry));
       } else {
         const double kick = g0 >= 0.0 ? f.lubrication * cs.dt / reduced_mass : 0.0;
-        f.contact = reduced_mass * contact_acceleration(cs, gap, u_n, entry, kick);
+        f.contact = reduced_mass * (loaded ? loaded_contact_acceleration(cs, gap, u_n, load, entry, kick)
+                                           : contact_acceleration(cs, gap, u_n, entry, kick));
       }
     }
   }
@@ -346,9 +360,9 @@ __attribute__((always_inline)) inline NormalForce contact_event_force(const Norm
 }
 
 inline NormalForce normal_force(const NormalModel &m, double gap, double radius, double reduced_mass, double u_n,
-                                Evaluation when = Evaluation::step)
+                                Evaluation when = Evaluation::step, double load = 0.0)
 {
-  return normal_force(m, gap, FilmRadius(radius), reduced_mass, u_n, when);
+  return normal_force(m, gap, FilmRadius(radius), reduced_mass, u_n, when, load);
 }
 
 inline double reduced_mass(double m_i, double m_j)
