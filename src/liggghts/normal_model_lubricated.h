@@ -164,6 +164,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     else
       lubricated::liggghts::forget_radius(this);
     join_film_budget(caller);
+    if (is_wall_) check_primitive_wall_list(caller);
     report_setup(caller);
   }
 
@@ -473,6 +474,46 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
       if (screen) fputs(line.c_str(), screen);
       if (logfile) fputs(line.c_str(), logfile);
     }
+  }
+
+  // LIGGGHTS 3.8.0 lists a sphere near a primitive wall when its gap is below the neighbor skin at
+  // a build (FixWallGran::pre_force: PrimitiveWall::buildNeighList(skin)), whatever the contact
+  // distance factor, and rebuilds once a sphere moved skin / 2: a sphere left out can close to a
+  // gap of skin / 2 unseen. Its film, reaching 0.75 dx (or eps_al r), is then missed for part of
+  // the approach (e 0.4444 instead of 0.4333 at skin 5e-5, 0.75 dx = 1.5e-4). A mesh wall's list
+  // (FixNeighlistMesh) covers r * factor + skin / 2 and needs no check.
+  void check_primitive_wall_list(const char *caller)
+  {
+    auto *wall = static_cast<LAMMPS_NS::FixWallGran *>(hsetup_);
+    const int wall_type = wall->atom_type_wall();
+    if (wall->is_mesh_wall() || wall_type < 1 || wall_type > ntypes_) return;
+    double r_max = 0.0, r_max_all = 0.0;
+    for (int i = 0; i < atom->nlocal; i++)
+      r_max = std::max(r_max, atom->radius[i]);
+    MPI_Allreduce(&r_max, &r_max_all, 1, MPI_DOUBLE, MPI_MAX, world);
+    double reach = 0.0;
+    std::string how;
+    for (int t = 1; t <= ntypes_; t++) {
+      const lubricated::Coefficients &c = coefficients_[t * (ntypes_ + 1) + wall_type];
+      if (!c.wet()) continue;
+      if (c.grid_spacing > 0.0) {
+        const double r = lubricated::Lubrication::grid_activation * c.grid_spacing;
+        if (r > reach)
+          reach = r, how = "2 x 0.75 lubricatedGridSpacing = 2 x 0.75 x " + lubricated::detail::number(c.grid_spacing);
+      } else if (c.eps_activation > 0.0 && c.eps_activation * r_max_all > reach) {
+        reach = c.eps_activation * r_max_all;
+        how = "2 x lubricatedActivation x the largest radius = 2 x " + lubricated::detail::number(c.eps_activation) +
+              " x " + lubricated::detail::number(r_max_all);
+      }
+    }
+    if (neighbor->skin >= 2.0 * reach * (1.0 - 1e-12)) return;
+    fail(std::string(caller) + ": the film reaches " + lubricated::detail::number(reach) +
+         " from this primitive wall, but LIGGGHTS lists a sphere near a primitive wall only within the neighbor "
+         "skin (" +
+         lubricated::detail::number(neighbor->skin) +
+         ") at a neighbor build and rebuilds after a sphere moved skin / 2, whatever the contact distance "
+         "factor: the film would be missed for part of an approach. Use neighbor skin >= " +
+         how + " = " + lubricated::detail::number(2.0 * reach) + ", or a mesh wall");
   }
 
   // The pair's model creates the budget fix (and keeps it after the walls); a wall joins it when
