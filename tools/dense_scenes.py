@@ -108,6 +108,14 @@ comm_modify vel yes
 """ + tail.format(skin=0.2 * R, dt=dt, every=every, steps=steps)
 
 
+def hashed_velocities(speed):
+    """Input lines that set each atom's velocity from a hash of its ID, every component uniform in
+    +-speed: the same scene on any number of ranks and processor grids (random() is not)."""
+    lines = [f"variable h{k} atom sin(id*{12.9898 + k}+{k})*43758.5453" for k in range(3)]
+    lines += [f"variable v{d} atom {speed!r}*(2*(v_h{k}-floor(v_h{k}))-1)" for k, d in enumerate("xyz")]
+    return "\n".join(lines + ["velocity all set v_vx v_vy v_vz units box"])
+
+
 def ranks(log):
     """The rank counts a log shows: each "A by B by C MPI processor grid" (A B C) and each
     "Loop time of t on N procs" (N); {4} for a run that really ran on 4 ranks."""

@@ -21,6 +21,8 @@ import re
 
 import pytest
 
+import dense_scenes
+
 SCENE = """plugin load ${{plugin}}
 units si
 atom_style sphere 1
@@ -157,13 +159,7 @@ atom_modify map array
 boundary p p p
 comm_modify vel yes
 read_data {data}
-variable h0 atom sin(id*12.9898)*43758.5453
-variable h1 atom sin(id*13.9898+1)*43758.5453
-variable h2 atom sin(id*14.9898+2)*43758.5453
-variable vx atom 0.1*(2*(v_h0-floor(v_h0))-1)
-variable vy atom 0.1*(2*(v_h1-floor(v_h1))-1)
-variable vz atom 0.1*(2*(v_h2-floor(v_h2))-1)
-velocity all set v_vx v_vy v_vz units box
+{velocities}
 variable s equal 1+5e-5*step
 fix grow all adapt 1 atom diameter v_s scale yes
 pair_style lubricated/springdashpot trim {trim}
@@ -184,7 +180,7 @@ DATA = pathlib.Path(__file__).resolve().parent / "dense_packings" / "p61.data"
 
 
 def bed(trim="yes", cutoff=" cutoff 0.0023", run="run 400"):
-    return BED.format(data=DATA, trim=trim, cutoff=cutoff, run=run)
+    return BED.format(data=DATA, trim=trim, cutoff=cutoff, run=run, velocities=dense_scenes.hashed_velocities(0.1))
 
 
 def test_a_growing_dense_bed(lmp):

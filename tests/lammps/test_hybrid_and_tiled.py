@@ -21,6 +21,8 @@ import pathlib
 
 import pytest
 
+import dense_scenes
+
 DATA = pathlib.Path(__file__).resolve().parent / "dense_packings" / "p61.data"
 
 SCRIPT = """plugin load ${{plugin}}
@@ -31,13 +33,7 @@ boundary p p p
 comm_modify vel yes
 {comm}
 read_data {data}{types}
-variable h0 atom sin(id*12.9898)*43758.5453
-variable h1 atom sin(id*13.9898+1)*43758.5453
-variable h2 atom sin(id*14.9898+2)*43758.5453
-variable vx atom 0.3*(2*(v_h0-floor(v_h0))-1)
-variable vy atom 0.3*(2*(v_h1-floor(v_h1))-1)
-variable vz atom 0.3*(2*(v_h2-floor(v_h2))-1)
-velocity all set v_vx v_vy v_vz units box
+{velocities}
 pair_style {pair}
 {pair_coeff}
 neighbor 2e-5 bin
@@ -61,7 +57,8 @@ RCB = "fix balance all balance 50 1.05 rcb"
 
 def script(coefficients, comm="", balance="", pair="lubricated/springdashpot", pair_coeff=None, types=""):
     pair_coeff = pair_coeff or f"pair_coeff * * {coefficients}"
-    return SCRIPT.format(comm=comm, data=DATA, types=types, pair=pair, pair_coeff=pair_coeff, balance=balance)
+    return SCRIPT.format(comm=comm, data=DATA, types=types, pair=pair, pair_coeff=pair_coeff, balance=balance,
+                         velocities=dense_scenes.hashed_velocities(0.3))
 
 
 def test_overlay_with_pair_zero_is_the_plain_run(lmp):

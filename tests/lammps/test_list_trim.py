@@ -27,7 +27,6 @@ import dense_scenes
 
 SKIN = 2.0e-5
 STEPS = 400
-HASH = "(v_h{k}-floor(v_h{k}))"
 MIXED = "mixed"
 MIXED_TYPES = """group odd id 1:300:2
 set group odd type 2
@@ -50,17 +49,11 @@ DATA = {"loose61": "p61", "preloaded": "p70"}
 
 
 def scene(packing, coefficients, trim, extra=""):
-    hashes = "\n".join(f"variable h{k} atom sin(id*{12.9898 + k}+{k})*43758.5453" for k in range(3))
-    u = [HASH.format(k=k) for k in range(3)]
     sample = "".join(f'print "RESULT s{k} $(x[{k}]:%.17g) $(y[{k}]:%.17g) $(z[{k}]:%.17g) $(vx[{k}]:%.17g) '
                      f'$(vy[{k}]:%.17g) $(vz[{k}]:%.17g) $(v_wx[{k}]:%.17g)"\n' for k in range(1, 301, 23))
     data = f"{dp.pinned(DATA[packing])} extra/atom/types 1" if coefficients == MIXED else dp.pinned(DATA[packing])
     pair_coeff = MIXED_TYPES if coefficients == MIXED else f"pair_coeff * * 0.9 ncontact 8 {coefficients}\n"
-    return dp.HEADER.format(boundary="p p p", data=data) + f"""{hashes}
-variable vx atom 0.3*(2*{u[0]}-1)
-variable vy atom 0.3*(2*{u[1]}-1)
-variable vz atom 0.3*(2*{u[2]}-1)
-velocity all set v_vx v_vy v_vz units box
+    return dp.HEADER.format(boundary="p p p", data=data) + f"""{dense_scenes.hashed_velocities(0.3)}
 pair_style lubricated/springdashpot trim {trim}
 {pair_coeff}neighbor {SKIN!r} bin
 neigh_modify delay 0 every 1 check yes
