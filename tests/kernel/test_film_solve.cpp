@@ -74,6 +74,16 @@ TEST(FilmSolve, IsolatedPairIsTheScalarImplicitStep)
   wall.links[0].j = -1, wall.links[0].shear_damping = 0.0, wall.links[0].wall_velocity = {0.25, 0.0, 0.0};
   const std::vector<double> ww = film_step(wall, dt);
   EXPECT_NEAR(ww[0] - 0.25, ma * (-1.25) / (ma + dt * l.normal_damping), 1e-13);
+  // A sphere whose only partners are walls: its 6x6 block (both films, translation and rotation
+  // coupled, two walls) is the whole operator, so the block preconditioner solves in one step.
+  wall.links[0].shear_damping = 3e4;
+  FilmLink side = wall.links[0];
+  side.normal = {0.0, 0.6, 0.8}, side.normal_damping = 2e3, side.shear_damping = 5e4;
+  wall.links.push_back(side);
+  FilmSolveResult one;
+  const std::vector<double> exact = film_step(wall, dt, &one);
+  EXPECT_EQ(one.iterations, 1);
+  EXPECT_LT(relative_difference(exact, dense_step(wall, dt)), 1e-13);
 }
 
 TEST(FilmSolve, KineticEnergyNeverRisesAndMatchesTheDissipation)
