@@ -212,7 +212,7 @@ class FilmSolver {
   int n_links_ = 0;
   double dt_ = 0.0;
   const FilmComm *comm_ = nullptr;
-  std::vector<double> weight_, residual_, preconditioned_, direction_, product_, accumulated_, blocks_;
+  std::vector<double> weight_, inverse_, drag_, residual_, preconditioned_, direction_, product_, accumulated_, blocks_;
   std::vector<char> has_block_;
 
   void forward(double *data, int per_atom) const
@@ -244,7 +244,7 @@ class FilmSolver {
       s += weight_[e] * x[e] * y[e];
     return s;
   }
-  void setup_weights();
+  void setup_weights();    // weight_ (masses), inverse_, drag_ per component of the owned atoms
   void setup_blocks(bool use_blocks);
   void apply(double *p, double *q);
   void precondition(const double *r, double *z) const;
@@ -252,11 +252,14 @@ class FilmSolver {
 
 inline void FilmSolver::setup_weights()
 {
-  weight_.assign(film_dofs * atoms_->owned, 0.0);
+  const int n = film_dofs * atoms_->owned;
+  weight_.resize(n), inverse_.resize(n), drag_.resize(n);
   for (int i = 0; i < atoms_->owned; i++)
     for (int d = 0; d < film_dofs; d++) {
-      const double inverse = inverse_of(i, d);
-      weight_[film_dofs * i + d] = inverse > 0.0 ? 1.0 / inverse : 0.0;
+      const int e = film_dofs * i + d;
+      inverse_[e] = inverse_of(i, d);
+      drag_[e] = drag_of(i, d);
+      weight_[e] = inverse_[e] > 0.0 ? 1.0 / inverse_[e] : 0.0;
     }
 }
 
@@ -314,11 +317,8 @@ inline void FilmSolver::apply(double *p, double *q)
   forward(p, film_dofs);
   film_forces(*atoms_, links_, n_links_, p, false, accumulated_.data());
   reverse(accumulated_.data(), film_dofs);
-  for (int i = 0; i < atoms_->owned; i++)
-    for (int d = 0; d < film_dofs; d++) {
-      const int e = film_dofs * i + d;
-      q[e] = p[e] + dt_ * inverse_of(i, d) * (drag_of(i, d) * p[e] - accumulated_[e]);
-    }
+  for (int e = 0; e < film_dofs * atoms_->owned; e++)
+    q[e] = p[e] + dt_ * inverse_[e] * (drag_[e] * p[e] - accumulated_[e]);
 }
 
 inline void FilmSolver::precondition(const double *r, double *z) const
@@ -355,7 +355,7 @@ inline FilmSolveResult FilmSolver::solve(const FilmAtoms &atoms, const FilmLink 
   film_forces(atoms, links, n_links, velocity, true, accumulated_.data());
   reverse(accumulated_.data(), film_dofs);
   for (int e = 0; e < n_owned; e++)
-    residual_[e] = dt * (force[e] + accumulated_[e]) * inverse_of(e / film_dofs, e % film_dofs);
+    residual_[e] = dt * (force[e] + accumulated_[e]) * inverse_[e];
   double norms[2] = {local_dot(residual_.data(), residual_.data()), 0.0};
   if (options.warm_start) {
     std::copy(increment, increment + n_owned, direction_.begin());
