@@ -26,6 +26,13 @@
 //
 // Parallel use: each film must appear on exactly one process (Newton's third law across
 // processes: films with a ghost partner are summed back to its owner by the reverse callback).
+// The callbacks see per-atom vectors of 6 values (forward and reverse, every iteration) and of
+// 36 (reverse, once per solve: the preconditioner's blocks), and sums of at most 3 values.
+//
+// Use: pack w = (v, omega) and F = (force, torque) per atom (stride 6), fill FilmLink per film
+// and FilmAtoms, call FilmSolver::solve (keep the solver: it reuses its buffers), add the
+// increment to the velocities, and report FilmSolveResult (iterations, residual, converged).
+// film_link_force at w' gives each film's force of the step (virial, stress).
 #pragma once
 
 #include "lubricated/tangential.h"
