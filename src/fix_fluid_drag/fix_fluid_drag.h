@@ -4,7 +4,8 @@
    (Richardson-Zaki or Di Felice) and buoyancy; optionally the fluid's inertia and memory
    (added mass, undisturbed-flow force, Basset history, Magnus and Saffman lift). Physics in
    src/lubricated/drag.h and src/lubricated/fluid_inertia.h. Keywords parsed in
-   fix_fluid_drag_args.cpp, the per-atom history in fix_fluid_drag_history.cpp.
+   fix_fluid_drag_args.cpp, the force per atom in fix_fluid_drag_force.cpp, the per-atom
+   history in fix_fluid_drag_history.cpp.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_FLUID_DRAG_H
@@ -49,6 +50,8 @@ class FixFluidDrag : public Fix {
   void restart(char *) override;
 
  protected:
+  friend struct FluidDragKeywords;    // the keyword table (fix_fluid_drag_args.cpp)
+  friend struct FluidDragValues;
   class FixStepVelocity *step_velocity = nullptr;    // the last step's velocities for a set-up
   lubricated::DragModel model;
   struct Component {
@@ -59,6 +62,7 @@ class FixFluidDrag : public Fix {
   };
   Component velocity[3], acceleration[3], vorticity[3];    // u_f, Du_f/Dt, curl u_f
   bool acceleration_given = false, vorticity_given = false;
+  bool have_viscosity = false;
   bool superficial = false;
   double gravity[3] = {0.0, 0.0, 0.0};    // for buoyancy; zero vector: none
   int nbins[3] = {1, 1, 1};
@@ -95,6 +99,7 @@ class FixFluidDrag : public Fix {
   bool totals_reduced = false;
 
   void parse(int narg, char **arg);
+  void check_keywords();
   bool needs_fraction() const;
   bool fluid_inertia() const { return added_mass > 0.0 || pressure || history || magnus || saffman; }
   bool solves_acceleration() const { return added_mass > 0.0 || history; }
@@ -105,6 +110,19 @@ class FixFluidDrag : public Fix {
   double solid_fraction_at(const double *x) const;
   void update_solid_fraction();
   bool stores_fraction() const { return needs_fraction() && every > 1; }
+  // the force per atom (fix_fluid_drag_force.cpp)
+  struct Slip {
+    double voidage, fluid_scale;              // eps = 1 - phi; u_f's factor (1 / eps where superficial)
+    double w[3], speed;                       // slip u_f - v and its magnitude
+    double diameter, beta, buoyant_volume;    // d, the drag coefficient, rho_f V
+  };
+  Slip slip_at(int i, const double *v) const;
+  void apply_drag(int i, const Slip &s);
+  void apply_with_inertia(int i, const Slip &s, const double *omega);
+  double history_force(int i, const Slip &s, double *known);
+  void near_wall_added_mass(int i, const Slip &s, double m_a, double *axis_mass, double *wall_force) const;
+  void lift_force(int i, const Slip &s, const double *omega, double *lift) const;
+  void record(int i, const double *force);
   void setup_history();
   void lay_out_tail(double dt);
   void warn_stiff_history();

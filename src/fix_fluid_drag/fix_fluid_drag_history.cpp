@@ -40,7 +40,8 @@ void FixFluidDrag::lay_out_tail(double dt)
 {
   history_dt = dt;
   basset = lubricated::BassetHistory(history_window, history_modes, history_dt);
-  if (finite_re && !mei_adrian.fits(basset)) mei_adrian = lubricated::MeiAdrianKernel(basset);    // ~30 ms
+  if (finite_re && !mei_adrian.fits(basset))
+    mei_adrian = lubricated::MeiAdrianKernel(basset);    // a table: built once per layout
 }
 
 void FixFluidDrag::pre_force(int /*vflag*/)
