@@ -66,6 +66,7 @@ class FixFluidDrag : public Fix {
   bool superficial = false;
   double gravity[3] = {0.0, 0.0, 0.0};    // for buoyancy; zero vector: none
   int nbins[3] = {1, 1, 1};
+  static constexpr double max_bins = 1e8;    // nx ny nz: 1.6 GB of bins on every rank
   bool bins_given = false;
   int every = 1;    // phi at the steps that are multiples of every (kept between runs)
 

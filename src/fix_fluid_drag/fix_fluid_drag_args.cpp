@@ -127,10 +127,19 @@ struct FluidDragKeywords {
   }
   static int bins(Values &a)
   {
+    double count = 1.0;    // in double: the product of three ints overflows an int
     for (int d = 0; d < 3; d++) {
       a.fix.nbins[d] = a.integer(d);
       a.check(a.fix.nbins[d] >= 1, "bins", d, ">= 1");
+      count *= a.fix.nbins[d];
     }
+    // Every rank holds two arrays of the bins (16 bytes a bin) and sums them over all ranks
+    // in one MPI call; the limit keeps that within memory and the bin index within an int.
+    if (count > FixFluidDrag::max_bins)
+      a.lmp->error->all(FLERR,
+                        "{}: bins {} {} {} = {:.0f} bins is out of range (allowed: nx ny nz <= {:.0f}, two "
+                        "arrays of 16 bytes a bin on every MPI rank)",
+                        STYLE, a.text(0), a.text(1), a.text(2), count, FixFluidDrag::max_bins);
     a.fix.bins_given = true;
     return 3;
   }
