@@ -37,7 +37,6 @@ FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
     error->all(FLERR, "{} requires atom_style sphere (per-atom radius and rmass)", STYLE);
 
   parse(narg, arg);
-  if (domain->triclinic) error->all(FLERR, "{} does not support triclinic boxes", STYLE);
   // phi is a volume fraction of spheres; a 2-d box has no volume to divide by.
   if (needs_fraction() && domain->dimension != 3) {
     const char *what = model.hindrance == lub::Hindrance::richardson_zaki ? "hindrance richardson-zaki"
@@ -58,6 +57,8 @@ FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
   global_freq = 1;
   extvector = 0;
   dynamic_group_allow = 1;
+  virial_global_flag = virial_peratom_flag = 1;    // in the virial on request: fix_modify virial yes
+  thermo_virial = 0;
   bin_solid.assign(nbins[0] * nbins[1] * nbins[2], 0.0);
   local_sum.assign(bin_solid.size(), 0.0);
   if (stores_fraction()) restart_global = 1;    // the last phi, for a restart between multiples of every
@@ -108,6 +109,11 @@ void FixFluidDrag::init()
       else
         error->all(FLERR, "{}: variable {} must be equal-style or atom-style", STYLE, c.name);
     }
+  if (affine_flow && !domain->deform_flag)
+    error->all(FLERR,
+               "{}: flow affine needs a deforming box (fix deform, e.g. xy erate with remap v): the affine "
+               "velocity is that of the box's deformation",
+               STYLE);
   run_dt = update->dt;
   run_dt_warned = false;
   if (history) lay_out_tail(history_begun ? history_dt : update->dt);    // kept once the history has begun
@@ -208,10 +214,11 @@ void FixFluidDrag::setup(int vflag)
 int FixFluidDrag::cloud_in_cell(const double *x, int *bins, double *weights) const
 {
   int lo[3], hi[3];
-  double w_hi[3];
+  double w_hi[3], lamda[3];
+  if (domain->triclinic) domain->x2lamda(const_cast<double *>(x), lamda);    // the bins lie along the box edges
   for (int d = 0; d < 3; d++) {
     const int n = nbins[d];
-    const double s = (x[d] - domain->boxlo[d]) / domain->prd[d] * n - 0.5;
+    const double s = (domain->triclinic ? lamda[d] : (x[d] - domain->boxlo[d]) / domain->prd[d]) * n - 0.5;
     int k = static_cast<int>(std::floor(s));
     double frac = s - k;
     if (n == 1) {

@@ -61,7 +61,8 @@ class FixFluidDrag : public Fix {
     bool per_atom = false;
   };
   Component velocity[3], acceleration[3], vorticity[3];    // u_f, Du_f/Dt, curl u_f
-  bool acceleration_given = false, vorticity_given = false;
+  bool velocity_given = false, acceleration_given = false, vorticity_given = false;
+  bool affine_flow = false;    // flow affine: u_f the deforming box's affine velocity
   bool have_viscosity = false;
   bool superficial = false;
   double gravity[3] = {0.0, 0.0, 0.0};    // for buoyancy; zero vector: none
@@ -123,6 +124,7 @@ class FixFluidDrag : public Fix {
   double history_force(int i, const Slip &s, double *known);
   void near_wall_added_mass(int i, const Slip &s, double m_a, double *axis_mass, double *wall_force) const;
   void lift_force(int i, const Slip &s, const double *omega, double *lift) const;
+  void fluid_velocity(int i, double *u) const;
   void record(int i, const double *force);
   void setup_history();
   void lay_out_tail(double dt);

@@ -3,7 +3,7 @@
 
    fix ID group fluid/drag viscosity mu keyword value ...
      density rho_f | law stokes|schiller-naumann | hindrance none|richardson-zaki n|di-felice
-     velocity ux uy uz (numbers or v_name) | superficial yes|no | buoyancy gx gy gz
+     velocity ux uy uz (numbers or v_name) | flow velocity|affine | superficial yes|no | buoyancy gx gy gz
      bins nx ny nz | every N
      added_mass C_m | wall xplane|yplane|zplane lo hi (NULL or a number) | pressure yes|no | acceleration ax ay az (numbers or v_name)
      history yes|no | kernel basset|mei-adrian | window N_w | tail M | magnus yes|no | vorticity wx wy wz | saffman yes|no
@@ -106,7 +106,20 @@ struct FluidDragKeywords {
       a.lmp->error->all(FLERR, "{}: hindrance must be none, richardson-zaki n or di-felice, got '{}'", STYLE, h);
     return 1;
   }
-  static int velocity(Values &a) { return a.components(0, a.fix.velocity), 3; }
+  static int velocity(Values &a)
+  {
+    a.components(0, a.fix.velocity);
+    a.fix.velocity_given = true;
+    return 3;
+  }
+  static int flow(Values &a)
+  {
+    const std::string flow = a.text(0);
+    if (flow != "affine" && flow != "velocity")
+      a.lmp->error->all(FLERR, "{}: flow must be affine or velocity, got '{}'", STYLE, flow);
+    a.fix.affine_flow = flow == "affine";
+    return 1;
+  }
   static int acceleration(Values &a)
   {
     a.components(0, a.fix.acceleration);
@@ -216,6 +229,7 @@ const Keyword KEYWORDS[] = {
     {"law", 1, K::law},
     {"hindrance", 1, K::hindrance},
     {"velocity", 3, K::velocity},
+    {"flow", 1, K::flow},
     {"superficial", 1, K::superficial},
     {"buoyancy", 3, K::buoyancy},
     {"bins", 3, K::bins},
@@ -263,6 +277,8 @@ void FixFluidDrag::parse(int narg, char **arg)
 void FixFluidDrag::check_keywords()
 {
   if (!have_viscosity) error->all(FLERR, "{}: the viscosity keyword is required", STYLE);
+  if (affine_flow && velocity_given)
+    error->all(FLERR, "{}: flow affine and the velocity keyword both give the fluid velocity: give one", STYLE);
   if (finite_re && !history) error->all(FLERR, "{}: kernel mei-adrian needs history yes", STYLE);
   if ((gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0) && model.density == 0.0)
     error->all(FLERR, "{}: buoyancy needs the fluid density (density keyword)", STYLE);

@@ -9,6 +9,7 @@
 #include "fix_step_velocity/fix_step_velocity.h"
 
 #include "atom.h"
+#include "domain.h"
 #include "update.h"
 
 #include <algorithm>
@@ -17,8 +18,9 @@
 using namespace LAMMPS_NS;
 namespace lub = lubricated;
 
-void FixFluidDrag::post_force(int /*vflag*/)
+void FixFluidDrag::post_force(int vflag)
 {
+  v_init(vflag);    // the virial, where fix_modify virial yes asks for it
   // At multiples of every (LAMMPS's convention), so that split runs and restarts see the
   // same phi as one run; in between, the last one, also from the last run or a restart file.
   if (needs_fraction() && (last_fraction_step < 0 || update->ntimestep % every == 0)) update_solid_fraction();
@@ -54,10 +56,10 @@ FixFluidDrag::Slip FixFluidDrag::slip_at(int i, const double *v) const
   Slip s;
   s.voidage = needs_fraction() ? 1.0 - solid_fraction_at(atom->x[i]) : 1.0;
   s.fluid_scale = superficial ? 1.0 / std::max(s.voidage, model.min_voidage) : 1.0;
-  double speed2 = 0.0;
+  double speed2 = 0.0, u[3];
+  fluid_velocity(i, u);
   for (int d = 0; d < 3; d++) {
-    const double u = velocity[d].per_atom ? atom_velocity[d][i] : velocity[d].value;
-    s.w[d] = u * s.fluid_scale - v[d];
+    s.w[d] = u[d] * s.fluid_scale - v[d];
     speed2 += s.w[d] * s.w[d];
   }
   s.speed = std::sqrt(speed2);
@@ -65,6 +67,19 @@ FixFluidDrag::Slip FixFluidDrag::slip_at(int i, const double *v) const
   s.beta = lub::drag_beta(model, s.diameter, s.speed, s.voidage);
   s.buoyant_volume = model.density * lub::sphere_volume(atom->radius[i]);
   return s;
+}
+
+// The velocity keyword's constants or variables, or the affine velocity of the deforming box.
+void FixFluidDrag::fluid_velocity(int i, double *u) const
+{
+  if (affine_flow) {
+    double lamda[3];
+    domain->x2lamda(atom->x[i], lamda);
+    lub::affine_velocity(domain->h_rate, domain->h_ratelo, lamda, u);
+    return;
+  }
+  for (int d = 0; d < 3; d++)
+    u[d] = velocity[d].per_atom ? atom_velocity[d][i] : velocity[d].value;
 }
 
 // Drag and buoyancy alone. Explicit relaxation is stable and exact in steady state while
@@ -167,9 +182,16 @@ void FixFluidDrag::lift_force(int i, const Slip &s, const double *omega, double 
   }
 }
 
-// The fluid's force on atom i, into the group's total.
-void FixFluidDrag::record(int /*i*/, const double *force)
+// The fluid's force on atom i, into the group's total and, on request, the virial: the force
+// of an external field at the unwrapped position r, r_a F_b (Voigt order xx yy zz xy xz yz).
+void FixFluidDrag::record(int i, const double *force)
 {
   for (int d = 0; d < 3; d++)
     totals[d] += force[d];
+  if (!vflag_either) return;
+  double r[3];
+  domain->unmap(atom->x[i], atom->image[i], r);
+  double virial_i[6] = {force[0] * r[0], force[1] * r[1], force[2] * r[2],
+                        force[0] * r[1], force[0] * r[2], force[1] * r[2]};
+  v_tally(i, virial_i);
 }
