@@ -114,19 +114,10 @@ void FixFluidDrag::init()
                "{}: flow affine needs a deforming box (fix deform, e.g. xy erate with remap v): the affine "
                "velocity is that of the box's deformation",
                STYLE);
-  run_dt = update->dt;
-  run_dt_warned = false;
   if (history) lay_out_tail(history_begun ? history_dt : update->dt);    // kept once the history has begun
   if (history && !stiff_warned) warn_stiff_history();
   step_velocity = dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
   if (solves_acceleration()) check_last_force_fix();
-  if (history && update->dt != history_dt && !dt_warned && comm->me == 0) {
-    error->warning(FLERR,
-                   "{}: the time step changed from {} to {}: the Basset window is re-weighted, its "
-                   "exponential tail keeps the old step (approximate history)",
-                   STYLE, history_dt, update->dt);
-    dt_warned = true;
-  }
 }
 
 // Beyond beta dt / (m + m_a + m_h) = 1 the drag is capped (post_force) but the history force

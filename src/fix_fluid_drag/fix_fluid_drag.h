@@ -85,10 +85,12 @@ class FixFluidDrag : public Fix {
   double **history_state = nullptr;
   double history_dt = 0.0;       // the step the tail is laid out for
   bool history_begun = false;    // a step has been committed (or restored): the layout is kept
-  bool dt_warned = false;
   bool stiff_warned = false;     // beta dt / (m + m_a + m_h) > 1 was reported
-  double run_dt = 0.0;           // the step at the start of this run
-  bool run_dt_warned = false;    // a change within this run was reported
+  // steps of unequal length (fix_fluid_drag_history.cpp): the lengths of the window's steps
+  lubricated::HistorySteps history_steps;
+  double evaluated_dt = 0.0;    // the step that ended at the last evaluation kept (0: none yet)
+  bool steps_uniform = true;    // this step and the window's all that of the layout
+  std::vector<double> step_bound, step_weight, step_decay, step_feed;
 
   std::vector<double> bin_solid;    // solid volume fraction per bin
   std::vector<double> local_sum;
@@ -128,6 +130,7 @@ class FixFluidDrag : public Fix {
   void record(int i, const double *force);
   void setup_history();
   void lay_out_tail(double dt);
+  void weigh_history_steps();
   void warn_stiff_history();
 };
 

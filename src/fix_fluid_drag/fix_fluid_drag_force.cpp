@@ -29,6 +29,7 @@ void FixFluidDrag::post_force(int vflag)
   evaluate(velocity, atom_velocity);
   if (fluid_inertia()) evaluate(acceleration, atom_acceleration);
   if (magnus || saffman) evaluate(vorticity, atom_vorticity);
+  if (history) weigh_history_steps();
 
   // A set-up that continues the last run drags with the velocities of its last step, as that
   // step did (fix_step_velocity.h, kept where the pair style or a wall fix of this plugin is).
@@ -145,9 +146,11 @@ double FixFluidDrag::history_force(int i, const Slip &s, double *known)
 {
   const double dt = update->dt;
   const double coefficient = lub::basset_coefficient(s.diameter, model.density, model.viscosity);
-  if (!finite_re) return basset.known_force(history_state[i], coefficient, dt, known);
+  const double *window = steps_uniform ? nullptr : step_weight.data();    // steps of unequal length
+  if (!finite_re) return basset.known_force(history_state[i], coefficient, dt, known, window);
   // Mei-Adrian: the kernel of this step's slip speed
-  mei_adrian.weigh(lub::mei_adrian_rate(s.speed, s.diameter, model.viscosity / model.density), dt);
+  mei_adrian.weigh(lub::mei_adrian_rate(s.speed, s.diameter, model.viscosity / model.density), dt,
+                   steps_uniform ? nullptr : step_bound.data());
   return basset.known_force(history_state[i], coefficient, dt, known, mei_adrian.window(), mei_adrian.tail());
 }
 
