@@ -37,7 +37,6 @@ FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
     error->all(FLERR, "{} requires atom_style sphere (per-atom radius and rmass)", STYLE);
 
   parse(narg, arg);
-  if (domain->triclinic) error->all(FLERR, "{} does not support triclinic boxes", STYLE);
   // phi is a volume fraction of spheres; a 2-d box has no volume to divide by.
   if (needs_fraction() && domain->dimension != 3) {
     const char *what = model.hindrance == lub::Hindrance::richardson_zaki ? "hindrance richardson-zaki"
@@ -58,6 +57,8 @@ FixFluidDrag::FixFluidDrag(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
   global_freq = 1;
   extvector = 0;
   dynamic_group_allow = 1;
+  virial_global_flag = virial_peratom_flag = 1;    // in the virial on request: fix_modify virial yes
+  thermo_virial = 0;
   bin_solid.assign(nbins[0] * nbins[1] * nbins[2], 0.0);
   local_sum.assign(bin_solid.size(), 0.0);
   if (stores_fraction()) restart_global = 1;    // the last phi, for a restart between multiples of every
@@ -108,24 +109,20 @@ void FixFluidDrag::init()
       else
         error->all(FLERR, "{}: variable {} must be equal-style or atom-style", STYLE, c.name);
     }
-  run_dt = update->dt;
-  run_dt_warned = false;
+  if (affine_flow && !domain->deform_flag)
+    error->all(FLERR,
+               "{}: flow affine needs a deforming box (fix deform, e.g. xy erate with remap v): the affine "
+               "velocity is that of the box's deformation",
+               STYLE);
   if (history) lay_out_tail(history_begun ? history_dt : update->dt);    // kept once the history has begun
   if (history && !stiff_warned) warn_stiff_history();
   step_velocity = dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
   if (solves_acceleration()) check_last_force_fix();
-  if (history && update->dt != history_dt && !dt_warned && comm->me == 0) {
-    error->warning(FLERR,
-                   "{}: the time step changed from {} to {}: the Basset window is re-weighted, its "
-                   "exponential tail keeps the old step (approximate history)",
-                   STYLE, history_dt, update->dt);
-    dt_warned = true;
-  }
 }
 
 // Beyond beta dt / (m + m_a + m_h) = 1 the drag is capped (post_force) but the history force
 // is not: it is no longer balanced by the drag and overshoots (a sphere the drag stopped
-// moves on; 30 % above the closed form at 6 relaxation times per step). Stokes' beta at rest,
+// moves on, well above the closed form). Stokes' beta at rest,
 // the smallest of the laws, so the warning is not given where the cap never acts.
 void FixFluidDrag::warn_stiff_history()
 {
@@ -208,10 +205,11 @@ void FixFluidDrag::setup(int vflag)
 int FixFluidDrag::cloud_in_cell(const double *x, int *bins, double *weights) const
 {
   int lo[3], hi[3];
-  double w_hi[3];
+  double w_hi[3], lamda[3];
+  if (domain->triclinic) domain->x2lamda(const_cast<double *>(x), lamda);    // the bins lie along the box edges
   for (int d = 0; d < 3; d++) {
     const int n = nbins[d];
-    const double s = (x[d] - domain->boxlo[d]) / domain->prd[d] * n - 0.5;
+    const double s = (domain->triclinic ? lamda[d] : (x[d] - domain->boxlo[d]) / domain->prd[d]) * n - 0.5;
     int k = static_cast<int>(std::floor(s));
     double frac = s - k;
     if (n == 1) {
@@ -273,126 +271,6 @@ void FixFluidDrag::update_solid_fraction()
   for (double &v : bin_solid)
     v /= bin_volume;
   last_fraction_step = update->ntimestep;
-}
-
-void FixFluidDrag::post_force(int /*vflag*/)
-{
-  const int nlocal = atom->nlocal;
-  // At multiples of every (LAMMPS's convention), so that split runs and restarts see the
-  // same phi as one run; in between, the last one, also from the last run or a restart file.
-  if (needs_fraction() && (last_fraction_step < 0 || update->ntimestep % every == 0)) update_solid_fraction();
-
-  // Fluid velocity and acceleration: constants, equal-style or atom-style variables.
-  evaluate(velocity, atom_velocity);
-  const bool inertia = fluid_inertia();
-  if (inertia) evaluate(acceleration, atom_acceleration);
-  if (magnus || saffman) evaluate(vorticity, atom_vorticity);
-
-  // A set-up that continues the last run drags with the velocities of its last step, as that
-  // step did (fix_step_velocity.h, kept where the pair style or a wall fix of this plugin is).
-  const bool continued = step_velocity && step_velocity->continues();
-  double **x = atom->x, **v = continued ? step_velocity->velocity() : atom->v, **f = atom->f;
-  double **omega = continued ? step_velocity->spin() : atom->omega;
-  const double *radius = atom->radius, *rmass = atom->rmass;
-  const int *mask = atom->mask;
-  const double dt = update->dt;
-  for (double &t : totals)
-    t = 0.0;
-  totals_reduced = false;
-
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    const double voidage = needs_fraction() ? 1.0 - solid_fraction_at(x[i]) : 1.0;
-    const double fluid_scale = superficial ? 1.0 / std::max(voidage, model.min_voidage) : 1.0;
-    double slip[3], speed2 = 0.0;
-    for (int d = 0; d < 3; d++) {
-      const double u = velocity[d].per_atom ? atom_velocity[d][i] : velocity[d].value;
-      slip[d] = u * fluid_scale - v[i][d];
-      speed2 += slip[d] * slip[d];
-    }
-    const double diameter = 2.0 * radius[i];
-    double beta = lub::drag_beta(model, diameter, std::sqrt(speed2), voidage);
-    const double buoyant_volume = model.density * lub::sphere_volume(radius[i]);
-    if (!inertia) {
-      // Explicit relaxation is stable and exact in steady state while beta dt / m <= 1;
-      // beyond, the drag removes the slip in one step and never reverses it.
-      beta = std::min(beta, rmass[i] / dt);
-      for (int d = 0; d < 3; d++) {
-        const double force = beta * slip[d] - buoyant_volume * gravity[d];
-        f[i][d] += force;
-        totals[d] += force;
-      }
-      continue;
-    }
-
-    // Maxey-Riley-Gatignol (fluid_inertia.h): added mass m_a and the history's current step
-    // m_h are solved for with the total force F, (m + m_a + m_h) a = F + (m_a + m_h) Du/Dt + H.
-    double fluid_accel[3], lift[3] = {0.0, 0.0, 0.0}, known[3] = {0.0, 0.0, 0.0};
-    for (int d = 0; d < 3; d++)
-      fluid_accel[d] = fluid_scale * (acceleration[d].per_atom ? atom_acceleration[d][i] : acceleration[d].value);
-    const double m_a = added_mass * buoyant_volume;
-    double m_h = 0.0;
-    if (history) {
-      const double coefficient = lub::basset_coefficient(diameter, model.density, model.viscosity);
-      if (finite_re) {    // Mei-Adrian: the kernel of this step's slip speed
-        mei_adrian.weigh(lub::mei_adrian_rate(std::sqrt(speed2), diameter, model.viscosity / model.density), dt);
-        m_h = basset.known_force(history_state[i], coefficient, dt, known, mei_adrian.window(), mei_adrian.tail());
-      } else
-        m_h = basset.known_force(history_state[i], coefficient, dt, known);
-    }
-    // Near walls the added mass grows, per axis, and its change brings forces of its own
-    // (wall_added_mass.h), with the velocity relative to the fluid, -slip.
-    double axis_mass[3] = {m_a, m_a, m_a}, wall_force[3] = {0.0, 0.0, 0.0};
-    if (!added_mass_walls.empty()) {
-      const lub::WallAddedMass near =
-          lub::wall_added_mass(added_mass_walls.data(), static_cast<int>(added_mass_walls.size()), radius[i], x[i]);
-      const double relative[3] = {-slip[0], -slip[1], -slip[2]};
-      lub::wall_added_mass_force(near, m_a, relative, wall_force);
-      for (int d = 0; d < 3; d++)
-        axis_mass[d] = m_a * near.mass[d];
-    }
-    const double m_eff = rmass[i] + std::min(axis_mass[0], std::min(axis_mass[1], axis_mass[2])) + m_h;
-    beta = std::min(beta, m_eff / dt);    // the cap above, for the mass that the drag accelerates
-    if (magnus || saffman) {
-      double curl[3], part[3];
-      for (int d = 0; d < 3; d++)
-        curl[d] = vorticity[d].per_atom ? atom_vorticity[d][i] : vorticity[d].value;
-      if (magnus) {
-        const double spin[3] = {omega[i][0] - 0.5 * curl[0], omega[i][1] - 0.5 * curl[1], omega[i][2] - 0.5 * curl[2]};
-        lub::magnus_force(radius[i], model.density, spin, slip, part);
-        for (int d = 0; d < 3; d++)
-          lift[d] += part[d];
-      }
-      if (saffman) {
-        lub::saffman_force(diameter, model.density, model.viscosity, slip, curl, part);
-        for (int d = 0; d < 3; d++)
-          lift[d] += part[d];
-      }
-    }
-    const double undisturbed = pressure ? buoyant_volume : 0.0;
-    double accel[3] = {0.0, 0.0, 0.0};
-    for (int d = 0; d < 3; d++) {
-      const double fluid =
-          beta * slip[d] - buoyant_volume * gravity[d] + undisturbed * fluid_accel[d] + lift[d] + wall_force[d];
-      if (!solves_acceleration()) {
-        f[i][d] += fluid;
-        totals[d] += fluid;
-        continue;
-      }
-      accel[d] = (f[i][d] + fluid + known[d] + (axis_mass[d] + m_h) * fluid_accel[d]) / (rmass[i] + axis_mass[d] + m_h);
-      const double total = rmass[i] * accel[d];
-      totals[d] += total - f[i][d];
-      f[i][d] = total;
-    }
-    // A set-up keeps the last step's evaluation, which the next step commits: it is the end
-    // value of that step, whereas the set-up's forces need not be the step's (nve/sphere/midpoint
-    // evaluates at the mid-step point X~, V~ and ignores them). Only an atom's first end value
-    // comes from a set-up.
-    if (history && !(update->setupflag && history_state[i][0] > 1.5)) {
-      const double wdot[3] = {fluid_accel[0] - accel[0], fluid_accel[1] - accel[1], fluid_accel[2] - accel[2]};
-      lub::BassetHistory::store(history_state[i], wdot);
-    }
-  }
 }
 
 double FixFluidDrag::compute_vector(int n)

@@ -4,7 +4,8 @@
    (Richardson-Zaki or Di Felice) and buoyancy; optionally the fluid's inertia and memory
    (added mass, undisturbed-flow force, Basset history, Magnus and Saffman lift). Physics in
    src/lubricated/drag.h and src/lubricated/fluid_inertia.h. Keywords parsed in
-   fix_fluid_drag_args.cpp, the per-atom history in fix_fluid_drag_history.cpp.
+   fix_fluid_drag_args.cpp, the force per atom in fix_fluid_drag_force.cpp, the per-atom
+   history in fix_fluid_drag_history.cpp.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_FLUID_DRAG_H
@@ -49,6 +50,8 @@ class FixFluidDrag : public Fix {
   void restart(char *) override;
 
  protected:
+  friend struct FluidDragKeywords;    // the keyword table (fix_fluid_drag_args.cpp)
+  friend struct FluidDragValues;
   class FixStepVelocity *step_velocity = nullptr;    // the last step's velocities for a set-up
   lubricated::DragModel model;
   struct Component {
@@ -58,10 +61,13 @@ class FixFluidDrag : public Fix {
     bool per_atom = false;
   };
   Component velocity[3], acceleration[3], vorticity[3];    // u_f, Du_f/Dt, curl u_f
-  bool acceleration_given = false, vorticity_given = false;
+  bool velocity_given = false, acceleration_given = false, vorticity_given = false;
+  bool affine_flow = false;    // flow affine: u_f the deforming box's affine velocity
+  bool have_viscosity = false;
   bool superficial = false;
   double gravity[3] = {0.0, 0.0, 0.0};    // for buoyancy; zero vector: none
   int nbins[3] = {1, 1, 1};
+  static constexpr double max_bins = 1e8;    // nx ny nz: 1.6 GB of bins on every rank
   bool bins_given = false;
   int every = 1;    // phi at the steps that are multiples of every (kept between runs)
 
@@ -79,10 +85,12 @@ class FixFluidDrag : public Fix {
   double **history_state = nullptr;
   double history_dt = 0.0;       // the step the tail is laid out for
   bool history_begun = false;    // a step has been committed (or restored): the layout is kept
-  bool dt_warned = false;
   bool stiff_warned = false;     // beta dt / (m + m_a + m_h) > 1 was reported
-  double run_dt = 0.0;           // the step at the start of this run
-  bool run_dt_warned = false;    // a change within this run was reported
+  // steps of unequal length (fix_fluid_drag_history.cpp): the lengths of the window's steps
+  lubricated::HistorySteps history_steps;
+  double evaluated_dt = 0.0;    // the step that ended at the last evaluation kept (0: none yet)
+  bool steps_uniform = true;    // this step and the window's all that of the layout
+  std::vector<double> step_bound, step_weight, step_decay, step_feed;
 
   std::vector<double> bin_solid;    // solid volume fraction per bin
   std::vector<double> local_sum;
@@ -95,6 +103,7 @@ class FixFluidDrag : public Fix {
   bool totals_reduced = false;
 
   void parse(int narg, char **arg);
+  void check_keywords();
   bool needs_fraction() const;
   bool fluid_inertia() const { return added_mass > 0.0 || pressure || history || magnus || saffman; }
   bool solves_acceleration() const { return added_mass > 0.0 || history; }
@@ -105,8 +114,23 @@ class FixFluidDrag : public Fix {
   double solid_fraction_at(const double *x) const;
   void update_solid_fraction();
   bool stores_fraction() const { return needs_fraction() && every > 1; }
+  // the force per atom (fix_fluid_drag_force.cpp)
+  struct Slip {
+    double voidage, fluid_scale;              // eps = 1 - phi; u_f's factor (1 / eps where superficial)
+    double w[3], speed;                       // slip u_f - v and its magnitude
+    double diameter, beta, buoyant_volume;    // d, the drag coefficient, rho_f V
+  };
+  Slip slip_at(int i, const double *v) const;
+  void apply_drag(int i, const Slip &s);
+  void apply_with_inertia(int i, const Slip &s, const double *omega);
+  double history_force(int i, const Slip &s, double *known);
+  void near_wall_added_mass(int i, const Slip &s, double m_a, double *axis_mass, double *wall_force) const;
+  void lift_force(int i, const Slip &s, const double *omega, double *lift) const;
+  void fluid_velocity(int i, double *u) const;
+  void record(int i, const double *force);
   void setup_history();
   void lay_out_tail(double dt);
+  void weigh_history_steps();
   void warn_stiff_history();
 };
 

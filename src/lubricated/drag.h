@@ -65,6 +65,17 @@ inline double drag_beta(const DragModel &m, double diameter, double slip_speed, 
   return 0.0;
 }
 
+// The affine velocity of a deforming box (fix deform's remap v, SLLOD): a point at fixed box
+// coordinates lamda (0..1 across the box) moves with the box, u = hdot lamda + lo_dot, with h
+// the upper-triangular box matrix in Voigt order (xx yy zz yz xz xy) and lo its origin.
+// Simple shear xy erate gdot: u_x = gdot (y - ylo).
+inline void affine_velocity(const double *h_rate, const double *lo_rate, const double *lamda, double *u)
+{
+  u[0] = h_rate[0] * lamda[0] + h_rate[5] * lamda[1] + h_rate[4] * lamda[2] + lo_rate[0];
+  u[1] = h_rate[1] * lamda[1] + h_rate[3] * lamda[2] + lo_rate[1];
+  u[2] = h_rate[2] * lamda[2] + lo_rate[2];
+}
+
 inline double sphere_volume(double radius)
 {
   return 4.0 / 3.0 * pi * radius * radius * radius;

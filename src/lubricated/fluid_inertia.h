@@ -58,6 +58,14 @@ inline double window_weight(int lag)
   return std::sqrt(lag + 1.0) - std::sqrt(static_cast<double>(lag));
 }
 
+// The same for steps of unequal length: the step of lag L spans the ages bound[L]..bound[L + 1]
+// (in units of the current step dt; bound[0] = 0, bound[1] = 1).
+inline void window_weights(int window, const double *bound, double *weight)
+{
+  for (int lag = 0; lag <= window; lag++)
+    weight[lag] = std::sqrt(bound[lag + 1]) - std::sqrt(bound[lag]);
+}
+
 // The exponential tail: 1/sqrt(tau) ~ sum_k weight[k] exp(-rate[k] tau) for tau >= t_win.
 struct BassetTail {
   std::vector<double> rate, weight;
@@ -113,8 +121,11 @@ class BassetHistory {
   double tail_dt() const { return tail_dt_; }
   const BassetTail &tail() const { return tail_; }
 
-  // A new step begins: the last evaluation's wdot becomes history.
-  void commit(double *s) const
+  // A new step begins: the last evaluation's wdot becomes history. The modes decay by one step
+  // and take in the step leaving the window: decay[k], feed[k] (HistorySteps where the steps
+  // differ in length; those of the layout otherwise).
+  void commit(double *s) const { commit(s, decay_.data(), feed_.data()); }
+  void commit(double *s, const double *decay, const double *feed) const
   {
     if (s[0] < 0.5) return;    // not evaluated yet
     if (s[0] < 1.5) {          // the first end value: no step behind it yet
@@ -127,7 +138,7 @@ class BassetHistory {
     for (int d = 0; d < 3; d++) {
       const double oldest = win[3 * (window_ - 1) + d];
       for (int k = 0; k < modes_; k++)
-        modes[3 * k + d] = decay_[k] * modes[3 * k + d] + feed_[k] * oldest;
+        modes[3 * k + d] = decay[k] * modes[3 * k + d] + feed[k] * oldest;
       for (int lag = window_ - 1; lag > 0; lag--)
         win[3 * lag + d] = win[3 * (lag - 1) + d];
       win[d] = 0.5 * (s[1 + d] + s[4 + d]);
@@ -172,6 +183,64 @@ class BassetHistory {
   double tail_dt_ = 0.0;
   BassetTail tail_;
   std::vector<double> decay_, feed_;
+};
+
+// The lengths of the window's steps, for steps that change (fix dt/reset, a timestep changed
+// between runs). They are the same for every atom: an atom's window shifts at every step once
+// its history has begun, and its slots before that hold zeros. Each step of the window is then
+// weighted by the kernel's integral over its true ages, and the tail's modes decay by the true
+// step and take in the leaving step over its true ages, so that the history stays that of the
+// real times. The tail's exponential sum keeps the rates it was laid out for (t_win = (W + 1) dt0):
+// where the steps became shorter, it also serves ages below t_win, down to (W + 1) dt.
+class HistorySteps {
+ public:
+  HistorySteps() = default;
+  HistorySteps(int window, double dt) : length_(window, dt) {}
+  const std::vector<double> &lengths() const { return length_; }
+  void set_lengths(const double *lengths)
+  {
+    for (std::size_t l = 0; l < length_.size(); l++)
+      length_[l] = lengths[l];
+  }
+  bool uniform(double dt) const
+  {
+    for (double h : length_)
+      if (h != dt) return false;
+    return true;
+  }
+  // bound[0..W + 1]: the ages of the steps' ends at an evaluation after a step dt, over dt.
+  void bounds(double dt, double *bound) const
+  {
+    bound[0] = 0.0;
+    double age = dt;
+    for (std::size_t l = 0; l <= length_.size(); l++) {
+      bound[l + 1] = age / dt;
+      if (l < length_.size()) age += length_[l];
+    }
+  }
+  // The commit between the step just evaluated (length last) and the next (length next): the
+  // decay of the modes over next, and the feed of the oldest step, whose ages at the next
+  // evaluation are a..a + h, int exp(-s age) = exp(-s a) (1 - exp(-s h)) / s; then the window
+  // shifts.
+  void advance(double last, double next, const BassetTail &tail, double *decay, double *feed)
+  {
+    const int window = static_cast<int>(length_.size());
+    double age = next + last;
+    for (int l = 0; l < window - 1; l++)
+      age += length_[l];
+    const double oldest = length_[window - 1];
+    for (std::size_t k = 0; k < tail.rate.size(); k++) {
+      const double s = tail.rate[k];
+      decay[k] = std::exp(-s * next);
+      feed[k] = std::exp(-s * age) * -std::expm1(-s * oldest) / s;
+    }
+    for (int l = window - 1; l > 0; l--)
+      length_[l] = length_[l - 1];
+    length_[0] = last;
+  }
+
+ private:
+  std::vector<double> length_;    // of the steps of lag 1..W
 };
 
 // Magnus lift of a spinning sphere, Rubinow & Keller, J. Fluid Mech. 11, 447 (1961), at low

@@ -73,18 +73,21 @@ inline double mei_adrian_primitive(double T)
 }
 
 // Weights of the window's steps, lag 0..window, over 2 sqrt(dt) (as window_weight in
-// fluid_inertia.h), for c = C dt^(3/2); c = 0 gives Basset's sqrt(L + 1) - sqrt(L).
-inline void mei_adrian_window_weights(int window, double c, double *weights)
+// fluid_inertia.h), for c = C dt^(3/2); c = 0 gives Basset's sqrt(L + 1) - sqrt(L). Steps of
+// unequal length: bound[L + 1] the age of the far end of lag L over dt (HistorySteps::bounds);
+// none: L + 1.
+inline void mei_adrian_window_weights(int window, double c, double *weights, const double *bound = nullptr)
 {
   if (c <= 0.0) {
+    if (bound) return window_weights(window, bound, weights);
     for (int lag = 0; lag <= window; lag++)
       weights[lag] = window_weight(lag);
     return;
   }
   const double scale = std::pow(c, 1.0 / 6.0), factor = 2.0 / (3.0 * scale * scale);
-  double below = 0.0;    // I(T) at the lag's start, T = c^(1/6) lag^(1/4)
+  double below = 0.0;    // I(T) at the lag's start, T = c^(1/6) (age / dt)^(1/4)
   for (int lag = 0; lag <= window; lag++) {
-    const double above = mei_adrian_primitive(scale * std::sqrt(std::sqrt(lag + 1.0)));
+    const double above = mei_adrian_primitive(scale * std::sqrt(std::sqrt(bound ? bound[lag + 1] : lag + 1.0)));
     weights[lag] = factor * (above - below);
     below = above;
   }
@@ -178,10 +181,10 @@ class MeiAdrianKernel {
       window_weight_(history.window() + 1), tail_weight_(history.modes())
   {
   }
-  // For rate C (mei_adrian_rate) and step dt.
-  void weigh(double rate, double dt)
+  // For rate C (mei_adrian_rate) and step dt; bound: steps of unequal length (HistorySteps::bounds).
+  void weigh(double rate, double dt, const double *bound = nullptr)
   {
-    mei_adrian_window_weights(window_, rate * dt * std::sqrt(dt), window_weight_.data());
+    mei_adrian_window_weights(window_, rate * dt * std::sqrt(dt), window_weight_.data(), bound);
     tail_.weights(rate * t_win_ * std::sqrt(t_win_), tail_weight_.data());
     for (double &w : tail_weight_)
       w /= std::sqrt(t_win_);

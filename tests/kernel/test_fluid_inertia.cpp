@@ -61,6 +61,59 @@ TEST(BassetHistory, ConstantSlipAccelerationGivesTheExactIntegral)
   }
 }
 
+TEST(HistorySteps, StepsOfUnequalLengthGiveTheExactIntegral)
+{
+  // As above with a step that changes every step (between dt0 / 4 and 2 dt0): the window
+  // weighted by the kernel over its true ages telescopes to 2 K wdot sqrt(t) while the history
+  // lies in the window; later the tail, laid out for dt0, adds its kernel error.
+  const double dt0 = 1e-4, coefficient = 3.0, wdot[3] = {1.0, -2.0, 0.5};
+  const int window = 10;
+  const BassetHistory history(window, 20, dt0);
+  HistorySteps steps(window, dt0);
+  std::vector<double> state(history.size(), 0.0), bound(window + 2), weight(window + 1), decay(20), feed(20);
+  double time = 0.0, last = 0.0;
+  for (int n = 0; n <= 4000; n++) {
+    const double dt = dt0 * (0.25 + 1.75 * (0.5 + 0.5 * std::sin(0.37 * n)));
+    if (n > 0) {
+      steps.advance(last, dt, history.tail(), decay.data(), feed.data());
+      history.commit(state.data(), decay.data(), feed.data());
+      time += dt;
+    }
+    steps.bounds(dt, bound.data());
+    window_weights(window, bound.data(), weight.data());
+    double known[3];
+    const double m_h = history.known_force(state.data(), coefficient, dt, known, weight.data());
+    BassetHistory::store(state.data(), wdot);
+    last = dt;
+    if (n == 0) continue;
+    const double exact = 2.0 * coefficient * std::sqrt(time);
+    const double tolerance = n <= window + 1 ? 1e-12 : 2e-3;
+    for (int d = 0; d < 3; d++)
+      ASSERT_NEAR(known[d] + m_h * wdot[d], exact * wdot[d], tolerance * std::abs(exact * wdot[d])) << n;
+  }
+}
+
+TEST(HistorySteps, EqualStepsGiveTheLayoutsWeights)
+{
+  const double dt = 1e-3;
+  const BassetHistory history(5, 12, dt);
+  HistorySteps steps(5, dt);
+  std::vector<double> bound(7), weight(6), decay(12), feed(12);
+  steps.bounds(dt, bound.data());
+  window_weights(5, bound.data(), weight.data());
+  for (int lag = 0; lag <= 5; lag++)
+    EXPECT_NEAR(weight[lag], window_weight(lag), 1e-15) << lag;
+  // decay and feed of equal steps: one commit with them equals the layout's commit
+  steps.advance(dt, dt, history.tail(), decay.data(), feed.data());
+  std::vector<double> a(history.size()), b(history.size());
+  for (std::size_t k = 0; k < a.size(); k++)
+    a[k] = b[k] = k == 0 ? 2.0 : std::sin(1.0 + k);
+  history.commit(a.data());
+  history.commit(b.data(), decay.data(), feed.data());
+  for (std::size_t k = 0; k < a.size(); k++)
+    EXPECT_NEAR(a[k], b[k], 1e-14 * std::abs(a[k]) + 1e-300) << k;
+}
+
 TEST(BassetHistory, EvaluatingAStepAgainChangesNothing)
 {
   // A set-up re-evaluates the step under way (no commit in between): same force, same state.

@@ -303,15 +303,6 @@ def test_a_step_set_at_the_first_set_up_lays_the_tail_out_for_it(lmp):
         assert reset[key] == pytest.approx(reference[key], rel=1e-12, abs=1e-18), key
 
 
-def test_a_step_changed_within_a_run_warns_once_per_run(lmp):
-    """fix dt/reset changing the step at every step of two runs: one warning in each run (the
-    tail's rates stay those of the first step; doc: error of about 1 % of v_t)."""
-    lmp(dt_reset_scene(200, "1e-9 1e-3 1e-8", runs=2))
-    warnings = [line for line in lmp.log.splitlines() if line.startswith("WARNING") and "within the run" in line]
-    assert len(warnings) == 2, warnings
-    assert "the Basset window's steps are weighted with the new step" in warnings[0]
-
-
 @pytest.mark.parametrize("dt", [1e-3, 1e-4])
 def test_a_step_beyond_the_drag_cap_warns_with_history(lmp, dt):
     """beta dt / (m + m_a + m_h) > 1, m_h = 2 K sqrt(dt): the drag is capped at (m + m_a +
