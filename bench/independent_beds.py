@@ -53,8 +53,8 @@ With --liggghts (skipped with a message where LIGGGHTS or the model library is m
 information) against model hooke/stiffness, all with tangential history and friction 0.3.
 
 Output: the table on stdout, OUT/RESULTS.md, section --section (default beds) of --results
-(default bench/RESULTS.md, 'none' to skip) with the README's performance table, OUT/runs.csv with every timed run; logs in
-OUT/bedN/runs/ (wiped at the start of each invocation; the bed files are kept).
+(default bench/RESULTS.md, 'none' to skip) with the README's performance table, OUT/runs.csv
+with every timed run; logs in OUT/bedN/runs/ (wiped at the start of each invocation; the bed files are kept).
 """
 import argparse
 import datetime
