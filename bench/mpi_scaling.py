@@ -14,7 +14,8 @@ drive's last kick), which must agree across rank counts: no atom lost, the same 
 This 2-vCPU machine gives about one core of throughput, so 2 ranks here check correctness and
 overhead; the 16-rank figures come from a 16-core machine. Without the project venv there,
 LUBRICATED_LMP, LUBRICATED_MPIEXEC and LUBRICATED_PLUGIN name the binary, the launcher and
-the plugin (tools/lammps_run.py). Writes OUT/SCALING.md and OUT/runs.csv, and section mpi-scaling of --results (bench/RESULTS.md).
+the plugin (tools/lammps_run.py). Writes OUT/SCALING.md and OUT/runs.csv, and section
+mpi-scaling of --results (bench/RESULTS.md).
 """
 import argparse
 import datetime
