@@ -54,7 +54,8 @@ information) against model hooke/stiffness, all with tangential history and fric
 
 Output: the table on stdout, OUT/RESULTS.md, section --section (default beds) of --results
 (default bench/RESULTS.md, 'none' to skip) with the README's performance table, OUT/runs.csv
-with every timed run; logs in OUT/bedN/runs/ (wiped at the start of each invocation; the bed files are kept).
+with every timed run; logs in OUT/bedN/runs/ (wiped at the start of each invocation; the bed
+files are kept).
 """
 import argparse
 import datetime
