@@ -65,14 +65,14 @@ test-liggghts:
 	$(PY) -m pytest tests/liggghts -q -rs -p no:cacheprovider
 
 # Settling-bed throughput against gran/hooke, fluidised-bed scaling with the drag fix
-# (bench/RESULTS.md and bench/SCALING.md hold the last figures).
+# (sections settling and fluidized-scaling of bench/RESULTS.md hold the last figures).
 bench: build
 	$(PY) bench/settling_bed.py --out $(BUILD)/bench
 	$(PY) bench/bed_scaling.py --out $(BUILD)/bed_scaling
 
 # Independent beds (issue 19): polydisperse random beds of 2000, 20000 and 100000 spheres, settled
 # with friction and kept active; the plugin dry, wet, with friction against gran/hooke and
-# gran/hooke/history (bench/RESULTS_BEDS.md, the README's performance table). Beds cached in
+# gran/hooke/history (section beds of bench/RESULTS.md, the README's performance table). Beds cached in
 # $(BUILD)/bench-beds (delete it or pass --rebuild to rebuild them). LIGGGHTS's model lubricated
 # on the same beds too (skipped with a message without LIGGGHTS). About 40 min on an idle core (estimate).
 BEDS_ARGS ?= --liggghts
@@ -80,12 +80,14 @@ bench-beds: setup-liggghts build
 	$(PY) bench/independent_beds.py --out $(BUILD)/bench-beds $(BEDS_ARGS)
 
 # What the wet targets leave for the films on the same beds (2000 and 20000 spheres), against what a
-# film-only pair costs (build/film_arithmetic): bench/RESULTS_WET_COST.md. About 2 min here.
+# film-only pair costs (build/film_arithmetic): section wet-cost of bench/RESULTS.md.
+# About 2 min here.
 bench-wet-cost: build
 	@cmake --build $(BUILD) --target film_arithmetic -j $(JOBS)
 	$(PY) bench/wet_cost.py --out $(BUILD)/bench-beds
 
-# LIGGGHTS settling bed: model lubricated against model hooke/stiffness (bench/RESULTS_LIGGGHTS.md).
+# LIGGGHTS settling bed: model lubricated against model hooke/stiffness (section liggghts-settling of
+# bench/RESULTS.md).
 bench-liggghts: setup-liggghts build
 	$(PY) bench/liggghts_settling_bed.py --out $(BUILD)/bench-liggghts
 

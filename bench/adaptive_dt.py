@@ -22,6 +22,7 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tools"))
 sys.path.insert(0, str(ROOT / "bench"))
+import bench_common  # noqa: E402
 import lammps_run  # noqa: E402
 import settling_bed as bed  # noqa: E402
 
@@ -46,7 +47,8 @@ def main():
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--seed", type=int, default=11)
     parser.add_argument("--out", default=str(ROOT / "build" / "bench-adaptive"))
-    parser.add_argument("--results", default=str(ROOT / "bench" / "RESULTS_ADAPTIVE.md"))
+    parser.add_argument("--results", default=str(bench_common.RESULTS),
+                        help="markdown file whose section 'adaptive' gets the results ('none' to skip)")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     shutil.rmtree(out, ignore_errors=True)
@@ -85,7 +87,7 @@ def main():
     print(text)
     (out / "RESULTS_ADAPTIVE.md").write_text(text)
     if args.results != "none":
-        pathlib.Path(args.results).write_text(text)
+        bench_common.write_section(args.results, "adaptive", text)
 
 
 if __name__ == "__main__":

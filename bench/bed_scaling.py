@@ -5,7 +5,8 @@ efficiency, and the share of the time spent in fix fluid/drag.
 
 Runs examples/fluidized_bed/in.fluidized_bed (2133 spheres at scale 1; dumps off). The drag
 share is the extra time of the same run with a second drag fix doing the same work.
-Writes scaling.md to --out. On this 2-vCPU machine the 2-rank figure shows correctness and
+Writes scaling.md to --out and section fluidized-scaling of --results (bench/RESULTS.md;
+'none' to skip). On this 2-vCPU machine the 2-rank figure shows correctness and
 overhead, not speed-up; on a 16-core machine pass --ranks 1 2 4 8 16.
 """
 import argparse
@@ -18,6 +19,8 @@ import sys
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tools"))
+sys.path.insert(0, str(ROOT / "bench"))
+import bench_common  # noqa: E402
 import lammps_run  # noqa: E402
 
 
@@ -38,6 +41,8 @@ def main():
     parser.add_argument("--scale", type=float, default=1.0)
     parser.add_argument("--steps", type=int, default=4000)
     parser.add_argument("--out", default=str(ROOT / "build" / "bed_scaling"))
+    parser.add_argument("--results", default=str(bench_common.RESULTS),
+                        help="markdown file whose section 'fluidized-scaling' gets the results ('none' to skip)")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     shutil.rmtree(out, ignore_errors=True)
@@ -74,6 +79,8 @@ def main():
         lines.append(f"| {ranks} | {ns:.1f} | {efficiency:.2f} | {share:.0%} |")
     text = "\n".join(lines) + "\n"
     (out / "scaling.md").write_text(text)
+    if args.results.lower() != "none":
+        bench_common.write_section(args.results, "fluidized-scaling", text)
     print(text)
 
 

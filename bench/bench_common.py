@@ -1,10 +1,12 @@
 """Helpers shared by the bed benchmarks (settling_bed.py, independent_beds.py).
 
 Log parsing (loop time, timing breakdown, neighbour statistics, list cutoff, memory), the
-built-in Hooke coefficients that match the plugin's spring-dashpot, and plain-words physics
-flags. No LAMMPS import: the benches run the `lmp` binary through tools/lammps_run.py.
+built-in Hooke coefficients that match the plugin's spring-dashpot, plain-words physics
+flags, and write_section, which puts a bench's report into its section of bench/RESULTS.md.
+No LAMMPS import: the benches run the `lmp` binary through tools/lammps_run.py.
 """
 import math
+import pathlib
 import re
 
 LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms")
@@ -98,3 +100,47 @@ neighbor {skin} bin
 neigh_modify delay 0 every 1 check yes
 timestep {dt}
 """
+
+
+RESULTS = pathlib.Path(__file__).resolve().parent / "RESULTS.md"
+
+
+def _demoted(text):
+    """The markdown text with every heading two levels down: a report's title sits under the
+    section's own heading (##) in bench/RESULTS.md."""
+    lines, fenced = [], False
+    for line in text.strip("\n").splitlines():
+        if line.startswith("```"):
+            fenced = not fenced
+        lines.append("##" + line if line.startswith("#") and not fenced else line)
+    return "\n".join(lines)
+
+
+def write_section(path, name, text):
+    """Put a bench's report into its own section of the markdown file path (bench/RESULTS.md).
+
+    The section lies between the lines `<!-- name begin -->` and `<!-- name end -->`; the text
+    replaces what is there, its headings two levels down, and everything outside the markers
+    (the file's introduction, notes written by hand, the other benches' sections) stays. A file
+    without that section gets it at the end; a missing file is created."""
+    path = pathlib.Path(path)
+    begin, end = f"<!-- {name} begin -->", f"<!-- {name} end -->"
+    section = f"{begin}\n{_demoted(text)}\n{end}"
+    old = path.read_text() if path.exists() else ""
+    pattern = re.compile(re.escape(begin) + r".*?" + re.escape(end), re.S)
+    if pattern.search(old):
+        new = pattern.sub(lambda _: section, old, count=1)
+    else:
+        new = (old.rstrip("\n") + "\n\n" if old.strip() else "") + section + "\n"
+    path.write_text(new)
+    return path
+
+
+if __name__ == "__main__":
+    # bench_common.py NAME REPORT [RESULTS]: a report written elsewhere (a device machine's run)
+    # becomes section NAME of bench/RESULTS.md (or of RESULTS).
+    import sys
+    if len(sys.argv) not in (3, 4):
+        sys.exit("usage: bench_common.py NAME REPORT [RESULTS]")
+    target = sys.argv[3] if len(sys.argv) == 4 else RESULTS
+    print("wrote", write_section(target, sys.argv[1], pathlib.Path(sys.argv[2]).read_text()))

@@ -3,7 +3,9 @@
 # some sessions): `pack` here bundles the wheel's lmp and MPICH, the plugin and the cached bed
 # into .devbench/b.tar.xz (about 25 MB; .devbench is git-ignored through .git/info/exclude);
 # `run` there unpacks it and runs the scaling with LUBRICATED_LMP, LUBRICATED_MPIEXEC and
-# LUBRICATED_PLUGIN (tools/lammps_run.py), writing SCALING_BEDS.md, log.txt and runs.csv to $OUT.
+# LUBRICATED_PLUGIN (tools/lammps_run.py), writing mpi_scaling.md, log.txt and runs.csv to $OUT.
+# Back here, `python3 bench/bench_common.py mpi-scaling <OUT>/mpi_scaling.md` puts the report
+# into its section of bench/RESULTS.md.
 #
 #   bench/device_scaling.sh pack [SIZE]                   # here, after `make` and the bench's bed
 #   bench/device_scaling.sh run [SIZE] [RANKS] [STEPS] [REPEATS]   # there, OUT=<folder>
@@ -43,7 +45,8 @@ run)
     lscpu | grep -E "Model name|Thread|Core|Socket" || true
     # shellcheck disable=SC2086  # ranks is a list
     PYTHONUNBUFFERED=1 python3 bench/mpi_scaling.py --size "$size" --ranks $ranks --steps "$steps" \
-        --repeats "$repeats" --results "$OUT"/SCALING_BEDS.md 2>&1 | tee "$OUT"/log.txt
+        --repeats "$repeats" --results none 2>&1 | tee "$OUT"/log.txt
+    cp build/bench-scaling/SCALING.md "$OUT"/mpi_scaling.md
     cp build/bench-scaling/runs.csv "$OUT"/ ;;
 *) echo "unknown mode $mode: pack or run" >&2; exit 1 ;;
 esac

@@ -52,9 +52,10 @@ With --liggghts (skipped with a message where LIGGGHTS or the model library is m
 3.8.0 runs on the same bed, states, steps and repeats: model lubricated wet (and dry, for
 information) against model hooke/stiffness, all with tangential history and friction 0.3.
 
-Output: the table on stdout, OUT/RESULTS.md, --results (default bench/RESULTS_BEDS.md, 'none'
-to skip) with the README's performance table, OUT/runs.csv with every timed run; logs in
-OUT/bedN/runs/ (wiped at the start of each invocation; the bed files are kept).
+Output: the table on stdout, OUT/RESULTS.md, section --section (default beds) of --results
+(default bench/RESULTS.md, 'none' to skip) with the README's performance table, OUT/runs.csv
+with every timed run; logs in OUT/bedN/runs/ (wiped at the start of each invocation; the bed
+files are kept).
 """
 import argparse
 import datetime
@@ -72,7 +73,8 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tools"))
 sys.path.insert(0, str(ROOT / "bench"))
 import lammps_run  # noqa: E402
-from bench_common import SETTINGS, hooke_coefficients, lammps_version, parse_log, physics_flags  # noqa: E402
+from bench_common import (RESULTS, SETTINGS, hooke_coefficients, lammps_version, parse_log,  # noqa: E402
+                          physics_flags, write_section)
 
 R = 1.0e-3                   # reference radius [m] (mean radius; the built-ins' stiffness)
 R_MIN, R_MAX = 0.9e-3, 1.1e-3
@@ -460,8 +462,12 @@ def main():
     parser.add_argument("--liggghts", action="store_true",
                         help="also time LIGGGHTS's model lubricated wet against model hooke/stiffness on each bed")
     parser.add_argument("--out", default=str(ROOT / "build" / "bench-beds"))
-    parser.add_argument("--results", default=str(ROOT / "bench" / "RESULTS_BEDS.md"),
-                        help="markdown file for the results besides OUT/RESULTS.md ('none' to skip)")
+    parser.add_argument("--results", default=str(RESULTS),
+                        help="markdown file whose --section gets the results besides OUT/RESULTS.md "
+                             "('none' to skip)")
+    parser.add_argument("--section", default="beds",
+                        help="section of --results to replace (default beds; beds-100000 for the "
+                             "100000 bed alone at --particle-steps 5e7)")
     args = parser.parse_args()
     all_styles = styles()
     names = args.styles or list(all_styles)
@@ -548,8 +554,8 @@ def main():
     (out / "RESULTS.md").write_text(text)
     (out / "runs.csv").write_text("\n".join(raw) + "\n")
     if args.results.lower() != "none":
-        pathlib.Path(args.results).write_text(text)
-        print(f"wrote {args.results}")
+        write_section(args.results, args.section, text)
+        print(f"wrote section {args.section} of {args.results}")
 
 
 def summarise(size, state, name, runs, memrefs, problems):

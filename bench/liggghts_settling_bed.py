@@ -18,7 +18,7 @@ timed from LIGGGHTS's "Loop time" lines. Width n makes the box n times wider in 
 
 The runs are interleaved and the smallest loop time of the repeats counts (noisy machine).
 Reported: ns per particle-step and the ratio to hooke/stiffness; the table goes to stdout,
-OUT/RESULTS_LIGGGHTS.md and --results (bench/RESULTS_LIGGGHTS.md; 'none' to skip).
+OUT/RESULTS_LIGGGHTS.md and section liggghts-settling of --results (bench/RESULTS.md; 'none' to skip).
 """
 import argparse
 import datetime
@@ -30,6 +30,8 @@ import sys
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tools"))
+sys.path.insert(0, str(ROOT / "bench"))
+import bench_common  # noqa: E402
 import liggghts_run  # noqa: E402
 
 # (label, model, wet, lubricatedLimitPair): the last row times the many-body film budget
@@ -46,7 +48,8 @@ def main():
     parser.add_argument("--settled", type=int, default=5000)
     parser.add_argument("--repeats", type=int, default=2)
     parser.add_argument("--out", default=str(ROOT / "build" / "bench-liggghts"))
-    parser.add_argument("--results", default=str(ROOT / "bench" / "RESULTS_LIGGGHTS.md"))
+    parser.add_argument("--results", default=str(bench_common.RESULTS),
+                        help="markdown file whose section 'liggghts-settling' gets the results ('none' to skip)")
     args = parser.parse_args()
     missing = liggghts_run.available()
     if missing:
@@ -107,7 +110,7 @@ def main():
     print(text)
     (out / "RESULTS_LIGGGHTS.md").write_text(text)
     if args.results != "none":
-        pathlib.Path(args.results).write_text(text)
+        bench_common.write_section(args.results, "liggghts-settling", text)
 
 
 if __name__ == "__main__":

@@ -3,7 +3,7 @@
    Runs an input file with the plugin loaded (the input's `plugin load`), then prints the
    memory_usage() of each part that LAMMPS sums for that figure (atom, neighbor, comm, update,
    force: the pair style; modify: each fix) in MB per 1000 atoms, one rank. Built by CMake
-   (build/memory_parts) where liblammps.so is found; bench/README.md has its figures.
+   (build/memory_parts) where liblammps.so is found; bench/RESULTS.md has its figures.
 
        build/memory_parts in.file [-var name value ...]
 ------------------------------------------------------------------------- */

@@ -14,7 +14,8 @@ drive's last kick), which must agree across rank counts: no atom lost, the same 
 This 2-vCPU machine gives about one core of throughput, so 2 ranks here check correctness and
 overhead; the 16-rank figures come from a 16-core machine. Without the project venv there,
 LUBRICATED_LMP, LUBRICATED_MPIEXEC and LUBRICATED_PLUGIN name the binary, the launcher and
-the plugin (tools/lammps_run.py). Writes OUT/SCALING.md and OUT/runs.csv, and --results.
+the plugin (tools/lammps_run.py). Writes OUT/SCALING.md and OUT/runs.csv, and section
+mpi-scaling of --results (bench/RESULTS.md).
 """
 import argparse
 import datetime
@@ -32,7 +33,7 @@ sys.path.insert(0, str(HERE))
 import lammps_run  # noqa: E402
 import independent_beds as beds  # noqa: E402
 from bed_scaling import machine  # noqa: E402
-from bench_common import parse_log  # noqa: E402
+from bench_common import RESULTS, parse_log, write_section  # noqa: E402
 
 # The kinetic energy at the last step, before the drive's last kick (fix ave/time samples at
 # the end of the step; the run's every-command follows).
@@ -68,8 +69,9 @@ def main():
     parser.add_argument("--repeats", type=int, default=2)
     parser.add_argument("--styles", nargs="+", default=STYLES)
     parser.add_argument("--out", default=str(ROOT / "build" / "bench-scaling"))
-    parser.add_argument("--results", default=str(HERE / "SCALING_BEDS.md"),
-                        help="markdown file for the results besides OUT/SCALING.md ('none' to skip)")
+    parser.add_argument("--results", default=str(RESULTS),
+                        help="markdown file whose section 'mpi-scaling' gets the results besides "
+                             "OUT/SCALING.md ('none' to skip)")
     args = parser.parse_args()
     all_styles = beds.styles()
     unknown = [s for s in args.styles if s not in all_styles]
@@ -113,7 +115,7 @@ def main():
     (out / "settled.data").unlink()
     print(text)
     if args.results.lower() != "none":
-        pathlib.Path(args.results).write_text(text)
+        write_section(args.results, "mpi-scaling", text)
         print(f"wrote {args.results}")
 
 

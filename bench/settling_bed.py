@@ -31,8 +31,8 @@ breakdown), dangerous neighbor builds, and physics checks on the final state of 
 (deepest wall overlap, spheres sunk into the floor, deepest sphere-sphere overlap, bed top,
 contacts per sphere, fastest sphere). Logs, data files and runs.csv (every timed run) stay in
 --out (wiped at the start);
-the table goes to stdout, to OUT/RESULTS.md and to --results (bench/RESULTS.md by default,
-bench/RESULTS_FRICTION.md with --friction; 'none' to skip). Targets (from the issue): plugin
+the table goes to stdout, to OUT/RESULTS.md and to section settling (friction with --friction)
+of --results (bench/RESULTS.md by default; 'none' to skip). Targets (from the issue): plugin
 dry <= 1.0 x gran/hooke, wet <= 1.3 x.
 """
 import argparse
@@ -49,7 +49,8 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tools"))
 sys.path.insert(0, str(ROOT / "bench"))
 import lammps_run  # noqa: E402
-from bench_common import SETTINGS, hooke_coefficients, lammps_version, parse_log, physics_flags  # noqa: E402,F401
+from bench_common import (RESULTS, SETTINGS, hooke_coefficients, lammps_version, parse_log,  # noqa: E402,F401
+                          physics_flags, write_section)
 
 R = 1.0e-3           # sphere radius [m]
 RHO = 2500.0         # sphere density [kg/m^3]
@@ -235,12 +236,10 @@ def main():
     parser.add_argument("--friction", action="store_true",
                         help="time the plugin with friction against gran/hooke/history (issue 4)")
     parser.add_argument("--out", default=str(ROOT / "build" / "bench"))
-    parser.add_argument("--results", default=None,
-                        help="markdown file for the results besides OUT/RESULTS.md ('none' to skip; "
-                             "default bench/RESULTS.md, bench/RESULTS_FRICTION.md with --friction)")
+    parser.add_argument("--results", default=str(RESULTS),
+                        help="markdown file whose section 'settling' ('friction' with --friction) gets "
+                             "the results besides OUT/RESULTS.md ('none' to skip)")
     args = parser.parse_args()
-    if args.results is None:
-        args.results = str(ROOT / "bench" / ("RESULTS_FRICTION.md" if args.friction else "RESULTS.md"))
     global FRICTION
     FRICTION = args.friction
     if not 0 < args.settling_at < args.settled_at:
@@ -303,7 +302,7 @@ def main():
     (out / "RESULTS.md").write_text(text)
     (out / "runs.csv").write_text("\n".join(raw) + "\n")
     if args.results.lower() != "none":
-        pathlib.Path(args.results).write_text(text)
+        write_section(args.results, "friction" if args.friction else "settling", text)
         print(f"wrote {args.results}")
 
 

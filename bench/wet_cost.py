@@ -26,8 +26,8 @@ Where the budget per pair is below the arithmetic, no arrangement of the loops m
 while the dry style's time stays as it is: the film of each film-only pair has to be evaluated
 every step.
 
-Output: the table on stdout, OUT/wet_cost.md and --results (default bench/RESULTS_WET_COST.md,
-'none' to skip). Logs in OUT/bedN/wet_cost/ (wiped at the start).
+Output: the table on stdout, OUT/wet_cost.md and section wet-cost of --results (default
+bench/RESULTS.md, 'none' to skip). Logs in OUT/bedN/wet_cost/ (wiped at the start).
 """
 import argparse
 import datetime
@@ -45,7 +45,7 @@ sys.path.insert(0, str(ROOT / "tools"))
 sys.path.insert(0, str(ROOT / "bench"))
 import independent_beds as beds  # noqa: E402
 import lammps_run  # noqa: E402
-from bench_common import SETTINGS, lammps_version, parse_log  # noqa: E402
+from bench_common import RESULTS, SETTINGS, lammps_version, parse_log, write_section  # noqa: E402
 
 # wet style -> (its dry counterpart, its reference, the target ratio)
 WET_STYLES = {"plugin wet": ("plugin dry", beds.FRICTIONLESS, 1.2),
@@ -107,7 +107,8 @@ def main():
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--particle-steps", type=float, default=beds.PARTICLE_STEPS)
     parser.add_argument("--out", default=str(ROOT / "build" / "bench-beds"))
-    parser.add_argument("--results", default=str(ROOT / "bench" / "RESULTS_WET_COST.md"))
+    parser.add_argument("--results", default=str(RESULTS),
+                        help="markdown file whose section 'wet-cost' gets the results ('none' to skip)")
     args = parser.parse_args()
     # what independent_beds.build_bed reads from its own arguments
     bed_args = argparse.Namespace(out=args.out, seed=beds.SEED, settle_min=beds.SETTLE_MIN,
@@ -151,7 +152,7 @@ def main():
     (out / "wet_cost.md").write_text(text)
     print("\n" + text)
     if args.results.lower() != "none":
-        pathlib.Path(args.results).write_text(text)
+        write_section(args.results, "wet-cost", text)
         print(f"wrote {args.results}")
 
 
