@@ -41,7 +41,7 @@ namespace lub = lubricated;
 
 static constexpr const char *STYLE = "Fix wall/lubrication";
 
-FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) : FixLubricatedWall(lmp, narg, arg)
+FixWallLubrication::FixWallLubrication(LAMMPS *lmp, int narg, char **arg) : FixWallLubricationBase(lmp, narg, arg)
 {
   ContactMass::watch_setforce(lmp);    // again after a `clear`
   require_supported_units(lmp, STYLE);

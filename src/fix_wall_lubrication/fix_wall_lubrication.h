@@ -8,7 +8,7 @@
 #ifndef LMP_FIX_WALL_LUBRICATION_H
 #define LMP_FIX_WALL_LUBRICATION_H
 
-#include "fix_lubricated_wall/fix_lubricated_wall.h"
+#include "fix_wall_lubrication_base.h"
 #include "lubricated/wall_geometry.h"
 
 #include <string>
@@ -16,7 +16,7 @@
 
 namespace LAMMPS_NS {
 
-class FixWallLubrication : public FixLubricatedWall {
+class FixWallLubrication : public FixWallLubricationBase {
  public:
   FixWallLubrication(class LAMMPS *, int, char **);
   ~FixWallLubrication() override;

@@ -7,8 +7,8 @@
    fix computes its own walls (compute_walls) and bounds their film shares.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_FIX_LUBRICATED_WALL_H
-#define LMP_FIX_LUBRICATED_WALL_H
+#ifndef LMP_FIX_WALL_LUBRICATION_BASE_H
+#define LMP_FIX_WALL_LUBRICATION_BASE_H
 
 #include "atom.h"
 #include "fix.h"
@@ -23,9 +23,9 @@
 
 namespace LAMMPS_NS {
 
-class FixLubricatedWall : public Fix {
+class FixWallLubricationBase : public Fix {
  public:
-  FixLubricatedWall(class LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), contact_mass(lmp) {}
+  FixWallLubricationBase(class LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), contact_mass(lmp) {}
 
   void post_constructor() override;
   int setmask() override;

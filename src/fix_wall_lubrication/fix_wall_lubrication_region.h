@@ -9,7 +9,7 @@
 #ifndef LMP_FIX_WALL_LUBRICATION_REGION_H
 #define LMP_FIX_WALL_LUBRICATION_REGION_H
 
-#include "fix_lubricated_wall/fix_lubricated_wall.h"
+#include "fix_wall_lubrication_base.h"
 #include "lubricated/wall_motion.h"
 
 #include <string>
@@ -17,7 +17,7 @@
 
 namespace LAMMPS_NS {
 
-class FixWallLubricationRegion : public FixLubricatedWall {
+class FixWallLubricationRegion : public FixWallLubricationBase {
  public:
   FixWallLubricationRegion(class LAMMPS *, int, char **);
   ~FixWallLubricationRegion() override;

@@ -49,7 +49,7 @@ struct RegionAxis : Region {
 }    // namespace
 
 FixWallLubricationRegion::FixWallLubricationRegion(LAMMPS *lmp, int narg, char **arg) :
-    FixLubricatedWall(lmp, narg, arg)
+    FixWallLubricationBase(lmp, narg, arg)
 {
   ContactMass::watch_setforce(lmp);
   require_supported_units(lmp, STYLE);
