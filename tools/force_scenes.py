@@ -6,9 +6,9 @@ contact is taken at once, whose forces, torques, energies and virial are recorde
 SI units. Two types (R = 1 mm and 0.6 mm, rho 2500 and 4000 kg/m^3), pairs of spheres far
 apart from each other, each pair at its own gap (in R_e = 2 R_i R_j / (R_i + R_j)): deep and
 shallow overlap, the release and saturation zones of the film, inside the film, just outside
-it, and a triple cluster; spheres near the floor z = 0 at their own gaps. Velocities (both
-signs of u_n, tangential slip) and spins are random but fixed by the seed. Periodic in x and
-y, the floor in z.
+it, and a triple cluster; spheres near the floor z = 0 (a plane wall, or a region's face) at
+their own gaps. Velocities (both signs of u_n, tangential slip) and spins are random but fixed
+by the seed. Periodic in x and y, the floor in z.
 """
 import math
 import random
@@ -33,6 +33,9 @@ WALL_MODELS = {
     "wall_dry": "0.9 ncontact 8",
     "wall_wet": "0.9 ncontact 8 viscosity 1e-3 activation 0.1",
     "wall_wet_friction_rolling": "0.8 ncontact 8 friction 0.4 rolling 0.05 viscosity 2e-3 activation 0.1",
+    # fix wall/lubrication/region: the floor as a block's face sliding along x (its motion,
+    # the torque sums and the per-face history of the region wall).
+    "region_wet_friction_rolling": "0.8 ncontact 8 friction 0.4 rolling 0.05 viscosity 2e-3 activation 0.1",
 }
 
 
@@ -93,13 +96,18 @@ def script(model, newton, steps):
     if wall:
         pair = "pair_style zero 0.003\npair_coeff * *"
         fix = f"fix floor all wall/lubrication {WALL_MODELS[model]} zplane 0.0 NULL"
+        if model.startswith("region_"):
+            e_d, keywords = WALL_MODELS[model].split(" ", 1)
+            fix = ("variable slide equal 0.03*step*1e-5\n"
+                   "region floor block INF INF INF INF 0.0 INF side in move v_slide NULL NULL units box\n"
+                   f"fix floor all wall/lubrication/region {e_d} floor {keywords}")
     else:
         pair = f"pair_style lubricated/springdashpot\npair_coeff * * {PAIR_MODELS[model]}"
         fix = ""
     # Recorded: the energy, then the pair virial (pressure units) or the wall's total force.
     if wall:
         setup = ""
-        terms = ["f_floor", "f_floor[1]", "f_floor[2]", "f_floor[3]"]
+        terms = ["f_floor"] + [f"f_floor[{k}]" for k in range(1, 7 if model.startswith("region_") else 4)]
     else:
         setup = "compute epair all pair lubricated/springdashpot\ncompute p all pressure NULL pair\n"
         terms = ["c_epair"] + [f"c_p[{k}]" for k in range(1, 7)]

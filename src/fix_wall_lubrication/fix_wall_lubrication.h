@@ -2,13 +2,14 @@
    fix wall/lubrication: planar or cylindrical walls, at rest or moving, with the
    spring-dashpot contact and the particle-wall lubrication film of Brandle de Motta et al.
    (CFM 2011). The same kernel as pair_style lubricated/springdashpot, with m_e = m and
-   lambda_pw (at a curved wall with the film radius R_f, lubricated/wall_curvature.h).
+   lambda_pw (at a curved wall with the film radius R_f, lubricated/wall_curvature.h). This
+   class finds the contacts (the walls' geometry and motion); the base applies each.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_WALL_LUBRICATION_H
 #define LMP_FIX_WALL_LUBRICATION_H
 
-#include "fix_lubricated_wall/fix_lubricated_wall.h"
+#include "fix_wall_lubrication_base.h"
 #include "lubricated/wall_geometry.h"
 
 #include <string>
@@ -16,7 +17,7 @@
 
 namespace LAMMPS_NS {
 
-class FixWallLubrication : public FixLubricatedWall {
+class FixWallLubrication : public FixWallLubricationBase {
  public:
   FixWallLubrication(class LAMMPS *, int, char **);
   ~FixWallLubrication() override;
@@ -62,9 +63,26 @@ class FixWallLubrication : public FixLubricatedWall {
   void parse_walls(int narg, char **arg, int iwall);
   void parse_motion(int narg, char **arg, int iarg);
   void check_sphere_sizes();
-  void compute_walls(bool defer_films) override;
-  void tally_film(int i, const lubricated::Vec3 &force, const lubricated::Vec3 &moment) override;
   void warn_behind();
+
+  // The walls' frame at this evaluation: shift now and a step ago, velocity (place_walls).
+  struct Frame {
+    lubricated::Vec3 shift, shift_before, velocity;
+  } frame;
+  void place_walls();
+  void find_contacts() override;
+  void tally(int i, const lubricated::Vec3 &force, const lubricated::Vec3 &torque) override;
+  // Plane walls along one axis each, for the search of the atoms near them (near_planes).
+  static constexpr int MAX_PLANES = 6;
+  struct Plane {
+    int axis, slot;
+    double side, position, shift, velocity, load_reach;
+  };
+  int plane_walls(Plane *planes) const;
+  void near_planes(const Plane *planes, int nplanes);
+  void walls_of_atom(int i, double mass);
+  void wall_contact(int i, const lubricated::WallSurface &w, const lubricated::WallPoint &at, double u_n,
+                    double film_radius, double mass, double load, double *h);
 };
 
 }    // namespace LAMMPS_NS

@@ -279,6 +279,6 @@ int FixWallLubrication::maxsize_restart()
 
 double FixWallLubrication::memory_usage()
 {
-  return FixLubricatedWall::memory_usage() +
+  return FixWallLubricationBase::memory_usage() +
          (history ? static_cast<double>(atom->nmax) * history_size * sizeof(double) : 0.0);
 }

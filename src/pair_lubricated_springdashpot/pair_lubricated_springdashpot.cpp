@@ -10,7 +10,7 @@
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_step_velocity/fix_step_velocity.h"
-#include "fix_lubricated_wall/fix_lubricated_wall.h"
+#include "fix_wall_lubrication/fix_wall_lubrication_base.h"
 #include "lubricated/check_setup.h"
 #include "lubricated/contact_network.h"
 #include "lubricated/contact_network_message.h"
@@ -249,7 +249,7 @@ void PairLubricatedSpringDashpot::init_style()
     for (const auto &msg : advice)
       if (!msg.empty()) error->warning(FLERR, "{}: {}", STYLE, msg);
   // Under pair_style hybrid each instance of the style keeps its own film budget, and fix
-  // wall/lubrication joins none where there are several (fix_lubricated_wall.cpp).
+  // wall/lubrication joins none where there are several (fix_wall_lubrication_base.cpp).
   // (pair_match gives the only instance for any nsub, and each of several for its own.)
   if (any_wet && comm->me == 0 && utils::strmatch(force->pair_style, "^hybrid") &&
       force->pair_match("lubricated/springdashpot", 1, 1) != force->pair_match("lubricated/springdashpot", 1, 2))
@@ -301,7 +301,7 @@ void PairLubricatedSpringDashpot::init_style()
   walls.clear();
   bool wet_walls = false;
   for (Fix *ifix : modify->get_fix_list()) {    // fix wall/lubrication and wall/lubrication/region
-    auto wall = dynamic_cast<FixLubricatedWall *>(ifix);
+    auto wall = dynamic_cast<FixWallLubricationBase *>(ifix);
     if (!wall) continue;
     walls.push_back(wall);
     wet_walls = wet_walls || wall->wet();

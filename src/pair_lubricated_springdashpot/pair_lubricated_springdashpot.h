@@ -93,7 +93,7 @@ class PairLubricatedSpringDashpot : public Pair {
   // and its film force (along n), applied in full by the loops and scaled down afterwards.
   bool limit_per_atom = true;
   bool film_budget = false;
-  std::vector<class FixLubricatedWall *> walls;    // the wall fixes: their films share the atoms' budget
+  std::vector<class FixWallLubricationBase *> walls;    // the wall fixes: their films share the atoms' budget
   std::vector<double> load_of_atom, scale_of_atom;
   std::vector<int> record_i, record_j;
   std::vector<double> record_force;
@@ -157,7 +157,7 @@ class PairLubricatedSpringDashpot : public Pair {
   // The plugin's wall fixes, whose sustained contacts join the check (found at each set-up; a
   // wall whose load exceeds network_check_load turns the check on too), and this check's wall
   // contacts: owned atom, normal, wall fix.
-  std::vector<class FixLubricatedWall *> network_walls;
+  std::vector<class FixWallLubricationBase *> network_walls;
   bool network_walls_check = false;
   struct WallContact {
     int i, wall;

@@ -9,7 +9,7 @@
 
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
-#include "fix_lubricated_wall/fix_lubricated_wall.h"
+#include "fix_wall_lubrication/fix_wall_lubrication_base.h"
 #include "lubricated/contact_network.h"
 #include "lubricated/contact_network_message.h"
 #include "lubricated/contact_network_ranks.h"
@@ -269,7 +269,7 @@ void PairLubricatedSpringDashpot::find_network_walls()
   network_walls.clear();
   network_walls_check = false;
   for (Fix *fix : modify->get_fix_list())
-    if (auto *wall = dynamic_cast<FixLubricatedWall *>(fix)) {
+    if (auto *wall = dynamic_cast<FixWallLubricationBase *>(fix)) {
       network_walls.push_back(wall);
       double load, bound;
       lub::network_loads(wall->contact_model(), update->dt, load, bound);
@@ -394,7 +394,7 @@ void PairLubricatedSpringDashpot::check_contact_network(int ncandidate)
   if (!scores.decide(world, network_warned, describe, found)) return;
   std::string message;
   if (found.type_i < 0) {
-    const FixLubricatedWall *wall = network_walls[-found.type_i - 1];
+    const FixWallLubricationBase *wall = network_walls[-found.type_i - 1];
     message = lub::network_message(STYLE, wall->coefficients(), update->dt, found, false,
                                    fmt::format("the walls of fix {} ({})", wall->id, wall->style));
   } else {

@@ -17,7 +17,7 @@
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "fix_wall_lubrication/fix_wall_lubrication.h"
-#include "fix_wall_lubrication_region/fix_wall_lubrication_region.h"
+#include "fix_wall_lubrication/fix_wall_lubrication_region.h"
 #include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
 
 using namespace LAMMPS_NS;

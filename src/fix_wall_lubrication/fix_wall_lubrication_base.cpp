@@ -1,12 +1,13 @@
 /* ----------------------------------------------------------------------
-   The wall fixes' shared part (fix_lubricated_wall.h)
+   The wall fixes' shared part (fix_wall_lubrication_base.h)
 ------------------------------------------------------------------------- */
 
-#include "fix_lubricated_wall.h"
+#include "fix_wall_lubrication_base.h"
 
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/check_setup.h"
+#include "lubricated/film_budget.h"
 #include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
 
 #include "atom.h"
@@ -25,17 +26,17 @@ namespace lub = lubricated;
 
 // The shared fix that lets a run's set-up continue the last run (created here, after this fix
 // is in place, when no pair style made it).
-void FixLubricatedWall::post_constructor()
+void FixWallLubricationBase::post_constructor()
 {
   FixStepVelocity::find_or_create(lmp);
 }
 
-int FixLubricatedWall::setmask()
+int FixWallLubricationBase::setmask()
 {
   return (coeffs.wet() ? PRE_FORCE : 0) | POST_FORCE | MIN_POST_FORCE;
 }
 
-void FixLubricatedWall::init_model(const char *style, const std::string &what)
+void FixWallLubricationBase::init_model(const char *style, const std::string &what)
 {
   lub::settle_contact_time(coeffs, update->dt);
   const lub::SetupCheck check = lub::check_setup(coeffs, lub::Partner::wall, update->dt);
@@ -60,7 +61,7 @@ void FixLubricatedWall::init_model(const char *style, const std::string &what)
 // Gravity presses a sphere onto a wall below it: the wall contact takes it as a steady load
 // b = -g . n (n from the wall to the sphere), which the integrator adds on top of the contact.
 // Other forces are not taken into account.
-void FixLubricatedWall::find_gravity()
+void FixWallLubricationBase::find_gravity()
 {
   gravity.clear();
   if (!model.normal.exact) return;
@@ -72,17 +73,17 @@ void FixLubricatedWall::find_gravity()
   }
 }
 
-void FixLubricatedWall::setup_pre_force(int /*vflag*/)
+void FixWallLubricationBase::setup_pre_force(int /*vflag*/)
 {
   if (update->whichflag == 1 && model.normal.lubrication.active()) compute_walls(true);
 }
 
-void FixLubricatedWall::pre_force(int /*vflag*/)
+void FixWallLubricationBase::pre_force(int /*vflag*/)
 {
   if (model.normal.lubrication.active()) compute_walls(true);
 }
 
-void FixLubricatedWall::setup(int /*vflag*/)
+void FixWallLubricationBase::setup(int /*vflag*/)
 {
   if (model.normal.lubrication.active())
     apply_films();
@@ -90,7 +91,7 @@ void FixLubricatedWall::setup(int /*vflag*/)
     compute_walls(false);
 }
 
-void FixLubricatedWall::post_force(int /*vflag*/)
+void FixWallLubricationBase::post_force(int /*vflag*/)
 {
   if (model.normal.lubrication.active())
     apply_films();
@@ -99,18 +100,18 @@ void FixLubricatedWall::post_force(int /*vflag*/)
 }
 
 // Minimisation: the walls in one go, films as each contact's own cap leaves them.
-void FixLubricatedWall::min_setup(int /*vflag*/)
+void FixWallLubricationBase::min_setup(int /*vflag*/)
 {
   compute_walls(false);
 }
 
-void FixLubricatedWall::min_post_force(int /*vflag*/)
+void FixWallLubricationBase::min_post_force(int /*vflag*/)
 {
   compute_walls(false);
 }
 
 // At the start of each evaluation: its outputs and its sustained contacts.
-void FixLubricatedWall::clear_sums()
+void FixWallLubricationBase::clear_sums()
 {
   for (double &s : local_sums)
     s = 0.0;
@@ -118,7 +119,7 @@ void FixLubricatedWall::clear_sums()
   sustained.clear();
 }
 
-double FixLubricatedWall::compute_scalar()
+double FixWallLubricationBase::compute_scalar()
 {
   if (!sums_reduced) {
     MPI_Allreduce(local_sums, global_sums, 1 + size_vector, MPI_DOUBLE, MPI_SUM, world);
@@ -127,26 +128,26 @@ double FixLubricatedWall::compute_scalar()
   return global_sums[0];
 }
 
-double FixLubricatedWall::compute_vector(int n)
+double FixWallLubricationBase::compute_vector(int n)
 {
   compute_scalar();
   return global_sums[1 + n];
 }
 
-double FixLubricatedWall::memory_usage()
+double FixWallLubricationBase::memory_usage()
 {
   return film_atom.capacity() * sizeof(int) +
          (film_force.capacity() + film_load.capacity() + shear_film.capacity() + inverse_mass.capacity()) *
              sizeof(double);
 }
 
-void FixLubricatedWall::clear_films()
+void FixWallLubricationBase::clear_films()
 {
   film_atom.clear(), film_force.clear(), film_load.clear(), shear_film.clear();
 }
 
 // The deferred films' entry of owned atom i: a new one unless i's walls came just before.
-std::size_t FixLubricatedWall::film_entry(int i)
+std::size_t FixWallLubricationBase::film_entry(int i)
 {
   if (!film_atom.empty() && film_atom.back() == i) return film_atom.size() - 1;
   film_atom.push_back(i);
@@ -156,14 +157,14 @@ std::size_t FixLubricatedWall::film_entry(int i)
   return film_atom.size() - 1;
 }
 
-void FixLubricatedWall::add_film_loads(double *load, int nlocal) const
+void FixWallLubricationBase::add_film_loads(double *load, int nlocal) const
 {
   if (!films_pending) return;
   for (std::size_t e = 0; e < film_atom.size(); e++)
     if (film_atom[e] < nlocal) load[film_atom[e]] += film_load[e];
 }
 
-void FixLubricatedWall::apply_films()
+void FixWallLubricationBase::apply_films()
 {
   if (!films_pending) return;
   films_pending = false;
@@ -185,6 +186,6 @@ void FixLubricatedWall::apply_films()
       torque[i][0] += moment.x, torque[i][1] += moment.y, torque[i][2] += moment.z;
     }
     f[i][0] += force.x, f[i][1] += force.y, f[i][2] += force.z;
-    tally_film(i, force, moment);
+    tally(i, force, moment);
   }
 }

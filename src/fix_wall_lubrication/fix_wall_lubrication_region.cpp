@@ -10,23 +10,15 @@
 #include "unit_style/unit_style.h"
 
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
-#include "fix_step_velocity/fix_step_velocity.h"
-#include "lubricated/check_setup.h"
 #include "lubricated/film_budget.h"
 #include "lubricated/wall_curvature.h"
-#include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
 
 #include "atom.h"
-#include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "force.h"
 #include "memory.h"
-#include "modify.h"
-#include "neighbor.h"
 #include "region.h"
 #include "update.h"
-#include "utils.h"
 
 #include <cmath>
 #include <cstring>
@@ -49,7 +41,7 @@ struct RegionAxis : Region {
 }    // namespace
 
 FixWallLubricationRegion::FixWallLubricationRegion(LAMMPS *lmp, int narg, char **arg) :
-    FixLubricatedWall(lmp, narg, arg)
+    FixWallLubricationBase(lmp, narg, arg)
 {
   ContactMass::watch_setforce(lmp);
   require_supported_units(lmp, STYLE);
@@ -187,54 +179,35 @@ void FixWallLubricationRegion::add_to_sums(const double *x, const lub::Vec3 &for
   local_sums[4] += moment.x, local_sums[5] += moment.y, local_sums[6] += moment.z;
 }
 
-void FixWallLubricationRegion::compute_walls(bool defer_films)
+void FixWallLubricationRegion::find_contacts()
 {
-  const bool continued = step_velocity && step_velocity->continues() && !contact_mass.active();
-  double **v = continued ? step_velocity->velocity() : atom->v;
-  double **omega = continued ? step_velocity->spin() : atom->omega;
-  const double *rmass = atom->rmass;
-  const int *mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  const lub::Evaluation when =
-      continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
-
-  clear_sums();
-  films_pending = defer_films = defer_films && model.normal.lubrication.active();
-  shear_pending = defer_films && model.tangential.film_active();
-  clear_films();
-  const double kick_time =
-      lub::film_kick_time(update->dt, when != lub::Evaluation::step, when == lub::Evaluation::midpoint_start);
   update_motion();
-
-  if (!contact_mass.active()) {
-    for (int i = 0; i < nlocal; i++)
-      if (mask[i] & groupbit) contacts_of_atom(i, rmass[i], v, omega, defer_films, kick_time, when);
-    return;
-  }
-  if (neighbor->ago == 0 || update->setupflag || static_cast<int>(inverse_mass.size()) < nlocal) {
-    if (static_cast<int>(inverse_mass.size()) < nlocal) inverse_mass.resize(atom->nmax);
-    contact_mass.fill(inverse_mass.data());
-  }
-  for (int i = 0; i < nlocal; i++)
-    if ((mask[i] & groupbit) && inverse_mass[i] > 0.0)
-      contacts_of_atom(i, 1.0 / inverse_mass[i], v, omega, defer_films, kick_time, when);
+  for (int i = 0; i < atom->nlocal; i++)
+    visit_atom(i, [this](int j, double mass) { contacts_of_atom(j, mass); });
 }
 
 // Every contact of atom i (contact mass `mass`) with the region's surface.
-void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, double **omega, bool defer_films,
-                                                double kick_time, lub::Evaluation when)
+void FixWallLubricationRegion::contacts_of_atom(int i, double mass)
 {
-  double *xi = atom->x[i];
-  const double r = atom->radius[i];
+  const double *xi = atom->x[i];
   // A centre outside the region is left alone (as fix wall/gran/region).
   if (!region->match(xi[0], xi[1], xi[2])) {
     if (history) release_other_slots(i, nullptr, 0);
     return;
   }
-  const bool exact_velocity = midpoint && model.normal.exact;
-  const double *vi = exact_velocity ? midpoint->step_velocity(i) : v[i];
-  // Search reach: the film's for the largest film radius allowed, and what the relative motion
-  // can close in a step (normal_model.h acts()).
+  const double *vi = midpoint && model.normal.exact ? midpoint->step_velocity(i) : pass.v[i];
+  const int nc = faces_near(i, vi);
+  for (int ic = 0; ic < nc; ic++)
+    face_contact(i, mass, ic, vi);
+}
+
+// The faces within reach of atom i (region->contact), whose step velocity is vi: the film's
+// reach for the largest film radius allowed, and what the relative motion can close in a step
+// (normal_model.h acts()). Faces no longer near the atom forget their elongation.
+int FixWallLubricationRegion::faces_near(int i, const double *vi)
+{
+  const double *xi = atom->x[i];
+  const double r = atom->radius[i];
   const lub::Vec3 arm = lub::minus({xi[0], xi[1], xi[2]}, motion.point);
   const double wall_speed = std::sqrt(lub::dot(motion.velocity, motion.velocity)) +
                             std::sqrt(lub::dot(motion.spin, motion.spin)) * (std::sqrt(lub::dot(arm, arm)) + r);
@@ -244,84 +217,54 @@ void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, 
   const int nc = region->surface(xi[0], xi[1], xi[2], cutoff);
   if (nc > slots)
     error->one(FLERR, "{}: {} contacts of one atom with region {} (at most {})", STYLE, nc, region_id, slots);
-
-  const bool tangential_on = model.tangential.active();
-  const bool moving = motion.moving();
-  if (history) {    // faces no longer near the atom forget their elongation
+  if (history) {
     faces.resize(nc);
     for (int ic = 0; ic < nc; ic++)
       faces[ic] = region->contact[ic].iwall;
     release_other_slots(i, faces.data(), nc);
   }
-  for (int ic = 0; ic < nc; ic++) {
-    const Region::Contact &c = region->contact[ic];
-    if (c.r <= 0.0) continue;    // a centre on the surface has no normal
-    const lub::Vec3 n{c.delx / c.r, c.dely / c.r, c.delz / c.r};
-    const lub::FilmRadius film = film_radius(r, c.radius);
-    const double gap = c.r - r;
-    lub::RelativeMotion rel;
-    if (moving) {
-      // Relative to the wall's material point at the contact; u_n with the velocity over the
-      // last step (fix nve/sphere/midpoint's where it integrates).
-      const lub::Vec3 contact_point{xi[0] - c.delx, xi[1] - c.dely, xi[2] - c.delz};
-      rel = lub::relative_to_wall(motion, {v[i][0], v[i][1], v[i][2]}, {omega[i][0], omega[i][1], omega[i][2]}, r, n,
-                                  contact_point);
-      if (exact_velocity) rel.u_n = lub::dot(lub::minus({vi[0], vi[1], vi[2]}, motion.velocity_at(contact_point)), n);
-    } else {
-      rel.u_n = vi[0] * n.x + vi[1] * n.y + vi[2] * n.z;
-    }
-    const double load = gravity_load(i, n);    // gravity pressing the atom onto the face
-    if (!model.normal.acts(gap, film.value, rel.u_n, load)) {
-      if (history) forget_slot(i, c.iwall);
-      continue;
-    }
-    double *h = history ? history_slot(i, c.iwall) : nullptr;
-    record_sustained(i, gap, rel.u_n, n);
+  return nc;
+}
 
-    lub::ContactPoint p;
-    p.gap = gap, p.u_n = rel.u_n, p.reduced_mass = mass, p.film = film, p.load = load;
-    lub::HistorySlot slot;
-    if (tangential_on) {
-      p.n = n;
-      p.dv = moving ? rel.dv : lub::Vec3{v[i][0], v[i][1], v[i][2]};
-      p.omega_i = moving ? rel.omega : lub::Vec3{omega[i][0], omega[i][1], omega[i][2]};
-      p.radius_i = r, p.reduced_radius = r;
-      p.mass_i = atom->rmass[i];
-      if (h) slot = {h + 1, h[4] != 0.0, !update->setupflag};
-    }
-    const lub::ContactForces cf =
-        tangential_on ? lub::contact_forces<true, lub::Partner::wall>(model, p, slot, when, shear_pending)
-                      : lub::contact_forces<false, lub::Partner::wall>(model, p, slot, when);
-    if (h) h[4] = slot.touched;
-    const lub::NormalForce &fn = cf.normal;
-    double normal = fn.total(), share = 0.0;
-    std::size_t entry = 0;    // the atom's entry among the deferred films
-    if (defer_films) {        // applied in post_force, within the atom's film budget
-      normal = fn.contact;
-      entry = film_entry(i);
-      double *ff = &film_force[3 * entry];
-      ff[0] += fn.lubrication * n.x, ff[1] += fn.lubrication * n.y, ff[2] += fn.lubrication * n.z;
-      share = lub::film_share(fn.lubrication, mass, rel.u_n, kick_time);
-      if (!shear_pending) film_load[entry] += share;
-    }
-    lub::Vec3 force = lub::scaled(n, normal), torque;
-    local_sums[0] += fn.energy;
-    if (tangential_on) {
-      if (shear_pending) {
-        film_load[entry] += lub::contact_film_share(share, cf.shear_share(kick_time));
-        double *out = &shear_film[6 * entry];
-        out[0] += cf.shear.x, out[1] += cf.shear.y, out[2] += cf.shear.z;
-        out[3] += cf.shear_torque_i.x, out[4] += cf.shear_torque_i.y, out[5] += cf.shear_torque_i.z;
-      }
-      force = lub::plus(force, cf.tangential);
-      torque = cf.torque_i;
-      double *ti = atom->torque[i];
-      ti[0] += torque.x, ti[1] += torque.y, ti[2] += torque.z;
-    }
-    double *fi = atom->f[i];
-    fi[0] += force.x, fi[1] += force.y, fi[2] += force.z;
-    add_to_sums(xi, force, torque);
+// Atom i (contact mass `mass`, step velocity vi) at the face of region->contact[ic], applied
+// where it acts.
+void FixWallLubricationRegion::face_contact(int i, double mass, int ic, const double *vi)
+{
+  const Region::Contact &c = region->contact[ic];
+  if (c.r <= 0.0) return;    // a centre on the surface has no normal
+  const double *xi = atom->x[i], *v = pass.v[i], *omega = pass.omega[i];
+  const double r = atom->radius[i];
+  WallContact contact;
+  contact.n = {c.delx / c.r, c.dely / c.r, c.delz / c.r};
+  const lub::Vec3 &n = contact.n;
+  contact.film = film_radius(r, c.radius);
+  contact.gap = c.r - r;
+  const bool moving = motion.moving();
+  lub::RelativeMotion rel;
+  if (moving) {
+    // Relative to the wall's material point at the contact; u_n with the velocity over the
+    // last step (fix nve/sphere/midpoint's where it integrates).
+    const lub::Vec3 contact_point{xi[0] - c.delx, xi[1] - c.dely, xi[2] - c.delz};
+    rel = lub::relative_to_wall(motion, {v[0], v[1], v[2]}, {omega[0], omega[1], omega[2]}, r, n, contact_point);
+    if (midpoint && model.normal.exact)
+      rel.u_n = lub::dot(lub::minus({vi[0], vi[1], vi[2]}, motion.velocity_at(contact_point)), n);
+  } else {
+    rel.u_n = vi[0] * n.x + vi[1] * n.y + vi[2] * n.z;
   }
+  contact.u_n = rel.u_n;
+  contact.load = gravity_load(i, n);    // gravity pressing the atom onto the face
+  if (!model.normal.acts(contact.gap, contact.film.value, contact.u_n, contact.load)) {
+    if (history) forget_slot(i, c.iwall);
+    return;
+  }
+  double *h = history ? history_slot(i, c.iwall) : nullptr;
+  contact.history = h ? h + 1 : nullptr;    // the face id, then elongation x y z and touched
+  if (model.tangential.active()) {
+    contact.dv = moving ? rel.dv : lub::Vec3{v[0], v[1], v[2]};
+    contact.omega = moving ? rel.omega : lub::Vec3{omega[0], omega[1], omega[2]};
+    contact.reduced_radius = r;
+  }
+  apply_contact(i, mass, contact);
 }
 
 // Every atom of the group counts as near each face it may touch at once (tmax), with the bound
@@ -339,8 +282,8 @@ void FixWallLubricationRegion::add_film_share_bounds(double *bound, int nlocal) 
                                                               rmass[i], update->dt));
 }
 
-// A deferred wall film, scaled, in the outputs: the force and torque on the group.
-void FixWallLubricationRegion::tally_film(int i, const lub::Vec3 &force, const lub::Vec3 &moment)
+// A force and torque on atom i in the outputs: the force and torque on the group.
+void FixWallLubricationRegion::tally(int i, const lub::Vec3 &force, const lub::Vec3 &torque)
 {
-  add_to_sums(atom->x[i], force, moment);
+  add_to_sums(atom->x[i], force, torque);
 }

@@ -4,12 +4,13 @@
    film act on the sphere's motion relative to the region's surface at the contact point; the
    film takes the radius R_f of the curved surface (lubricated/wall_curvature.h); friction
    history is kept per atom and per region face, migrates and is written to restart files.
+   This class finds the contacts with the region's faces; the base applies each.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_FIX_WALL_LUBRICATION_REGION_H
 #define LMP_FIX_WALL_LUBRICATION_REGION_H
 
-#include "fix_lubricated_wall/fix_lubricated_wall.h"
+#include "fix_wall_lubrication_base.h"
 #include "lubricated/wall_motion.h"
 
 #include <string>
@@ -17,7 +18,7 @@
 
 namespace LAMMPS_NS {
 
-class FixWallLubricationRegion : public FixLubricatedWall {
+class FixWallLubricationRegion : public FixWallLubricationBase {
  public:
   FixWallLubricationRegion(class LAMMPS *, int, char **);
   ~FixWallLubricationRegion() override;
@@ -72,10 +73,11 @@ class FixWallLubricationRegion : public FixLubricatedWall {
   // energy, force of the wall on the group x y z, its torque about the reference point x y z
   void add_to_sums(const double *x, const lubricated::Vec3 &force, const lubricated::Vec3 &torque);
 
-  void compute_walls(bool defer_films) override;
-  void tally_film(int i, const lubricated::Vec3 &force, const lubricated::Vec3 &moment) override;
-  void contacts_of_atom(int i, double mass, double **v, double **omega, bool defer_films, double kick_time,
-                        lubricated::Evaluation when);
+  void find_contacts() override;
+  void tally(int i, const lubricated::Vec3 &force, const lubricated::Vec3 &torque) override;
+  void contacts_of_atom(int i, double mass);
+  int faces_near(int i, const double *vi);
+  void face_contact(int i, double mass, int ic, const double *vi);
   lubricated::FilmRadius film_radius(double sphere_radius, double contact_radius) const;
 };
 

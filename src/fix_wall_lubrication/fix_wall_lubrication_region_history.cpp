@@ -121,7 +121,7 @@ int FixWallLubricationRegion::maxsize_restart()
 
 double FixWallLubricationRegion::memory_usage()
 {
-  return FixLubricatedWall::memory_usage() + faces.capacity() * sizeof(int) +
+  return FixWallLubricationBase::memory_usage() + faces.capacity() * sizeof(int) +
          (history ? static_cast<double>(atom->nmax) * slots * SLOT * sizeof(double) : 0.0);
 }
 

@@ -1,14 +1,16 @@
 /* -*- c++ -*- ----------------------------------------------------------
    What the two wall fixes of the plugin share (fix wall/lubrication, fix
    wall/lubrication/region): the coefficients and the contact model, the run's order of work,
-   the check and description at init, and the wall films' part in the many-body film budget.
-   A wet wall is computed before the pair style (pre_force) and its films applied after it
-   (post_force), scaled by the atoms' budget; a dry wall is computed after the pair style. Each
-   fix computes its own walls (compute_walls) and bounds their film shares.
+   the check and description at init, the application of one contact, and the wall films' part
+   in the many-body film budget. A wet wall is computed before the pair style (pre_force) and
+   its films applied after it (post_force), scaled by the atoms' budget; a dry wall is computed
+   after the pair style. Each wall style only finds its contacts (find_contacts: the geometry,
+   the wall's velocity and curvature) and hands each to apply_contact; it also bounds its
+   walls' film shares.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_FIX_LUBRICATED_WALL_H
-#define LMP_FIX_LUBRICATED_WALL_H
+#ifndef LMP_FIX_WALL_LUBRICATION_BASE_H
+#define LMP_FIX_WALL_LUBRICATION_BASE_H
 
 #include "atom.h"
 #include "fix.h"
@@ -23,9 +25,9 @@
 
 namespace LAMMPS_NS {
 
-class FixLubricatedWall : public Fix {
+class FixWallLubricationBase : public Fix {
  public:
-  FixLubricatedWall(class LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), contact_mass(lmp) {}
+  FixWallLubricationBase(class LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), contact_mass(lmp) {}
 
   void post_constructor() override;
   int setmask() override;
@@ -66,10 +68,56 @@ class FixLubricatedWall : public Fix {
   class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
   class FixStepVelocity *step_velocity = nullptr;    // the last step's velocities for a set-up
   class PairLubricatedSpringDashpot *pair = nullptr;
-  // Deferred films (a run): per owned atom with a film (film_atom, in the order compute_walls
-  // meets them, each atom's walls together) the normal films' force x y z and their summed
-  // share, and with the shear film its force x y z and torque x y z, scaled with the normal
-  // films (one contact's share: the larger of the two films'); valid while films_pending.
+
+  // One contact of an atom with a wall, as a wall style finds it.
+  struct WallContact {
+    double gap = 0.0, u_n = 0.0;    // the gap and the normal velocity over the last step
+    double load = 0.0;              // gravity along n, pressing the atom onto the wall where > 0
+    lubricated::Vec3 n;             // unit normal from the wall to the atom
+    lubricated::FilmRadius film;    // the normal film's radius R_f
+    // Read only where the model has tangential parts: the sphere's velocity and spin relative
+    // to the wall at the contact, and the radius of the shear film and of rolling.
+    lubricated::Vec3 dv, omega;
+    double reduced_radius = 0.0;
+    double *history = nullptr;    // friction history: elongation x y z, then the touched flag
+  };
+  // This evaluation (begin_evaluation): the velocities it reads (the last step's for a set-up
+  // that continues a run), its kind, whether its films wait for post_force and their kick time,
+  // and whether contact masses come from inverse_mass.
+  struct Pass {
+    double **v = nullptr, **omega = nullptr;
+    lubricated::Evaluation when = lubricated::Evaluation::step;
+    bool defer_films = false;
+    double kick_time = 0.0;
+    bool by_inverse = false;
+  } pass;
+  // The wall style's contacts of this evaluation, each handed to apply_contact.
+  virtual void find_contacts() = 0;
+  // Calls visit(i, m_e) for owned atom i of the group unless it is immovable: m_e = m, the
+  // body's mass for an atom of a rigid body.
+  template <class Visit> [[gnu::always_inline]] inline void visit_atom(int i, Visit &&visit)
+  {
+    if (!(atom->mask[i] & groupbit)) return;
+    if (!pass.by_inverse)
+      visit(i, atom->rmass[i]);
+    else if (inverse_mass[i] > 0.0)
+      visit(i, 1.0 / inverse_mass[i]);
+  }
+  // The contact of owned atom i (contact mass m_e = mass) on the atom and in the outputs: force,
+  // torque, energy, the deferred films, the sustained contacts and the friction history.
+  void apply_contact(int i, double mass, const WallContact &contact);
+  // A force and torque on atom i in the fix's vector sums (the energy is sums[0]).
+  virtual void tally(int i, const lubricated::Vec3 &force, const lubricated::Vec3 &torque) = 0;
+  // How a contact's tangential force joins its normal force: the plane and cylinder walls add
+  // them to the atom and the sums one after the other, the region wall their sum (its torque
+  // about the reference point is taken of the sum). The two orders round differently; each
+  // wall keeps its own, so that its results stay the same to the last bit.
+  bool adds_tangential_apart = false;
+
+  // Deferred films (a run): per owned atom with a film (film_atom, in the order the walls meet
+  // them, each atom's walls together) the normal films' force x y z and their summed share, and
+  // with the shear film its force x y z and torque x y z, scaled with the normal films (one
+  // contact's share: the larger of the two films'); valid while films_pending.
   std::vector<int> film_atom;
   std::vector<double> film_force, film_load, shear_film;
   void clear_films();
@@ -120,12 +168,18 @@ class FixLubricatedWall : public Fix {
                        g.acceleration[2] * g.acceleration[2]);
     return sum * dt * dt;
   }
-  virtual void compute_walls(bool defer_films) = 0;
+  // One evaluation of the walls: its films deferred to post_force where asked (a wet run).
+  void compute_walls(bool defer_films);
+  void begin_evaluation(bool defer_films);
+  // The parts of apply_contact: the kernel's forces (and the history's touched flag), the films
+  // set aside for post_force (returns the normal force applied now), the forces applied.
+  lubricated::ContactForces contact_forces_of(int i, double mass, const WallContact &contact);
+  double defer_contact_films(int i, double mass, const WallContact &contact, const lubricated::ContactForces &forces);
+  void add_contact_force(int i, const lubricated::Vec3 &normal, const lubricated::ContactForces *tangential);
   // The deferred films, scaled by the atoms' film budget: the pair style's where it keeps one
   // (its loads include these walls), this fix's own without a lubricated pair style, none
   // under `limit pair`; tally() adds each atom's scaled film force and moment to the outputs.
   void apply_films();
-  virtual void tally_film(int i, const lubricated::Vec3 &force, const lubricated::Vec3 &moment) = 0;
 };
 
 }    // namespace LAMMPS_NS

@@ -1,0 +1,134 @@
+/* ----------------------------------------------------------------------
+   The wall fixes' evaluation (fix_wall_lubrication_base.h): its shared preamble, then the
+   contacts a wall style finds, each applied here once: the kernel's forces on the atom and in
+   the outputs, the films deferred to post_force, the sustained contacts and the history.
+------------------------------------------------------------------------- */
+
+#include "fix_wall_lubrication_base.h"
+
+#include "fix_step_velocity/fix_step_velocity.h"
+#include "lubricated/film_budget.h"
+
+#include "atom.h"
+#include "neighbor.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+namespace lub = lubricated;
+
+// One evaluation: the shared preamble, then the wall style's contacts.
+void FixWallLubricationBase::compute_walls(bool defer_films)
+{
+  begin_evaluation(defer_films);
+  find_contacts();
+}
+
+// The velocities, the kind of evaluation, the outputs and the deferred films of this
+// evaluation, and the contact masses where some atoms are held or in rigid bodies.
+void FixWallLubricationBase::begin_evaluation(bool defer_films)
+{
+  // A set-up that continues the last run evaluates as its last step did, with its velocities
+  // (fix_step_velocity.h); not with rigid bodies or immovable atoms.
+  const bool continued = step_velocity && step_velocity->continues() && !contact_mass.active();
+  pass.v = continued ? step_velocity->velocity() : atom->v;
+  pass.omega = continued ? step_velocity->spin() : atom->omega;
+  pass.when = continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
+
+  clear_sums();
+  films_pending = pass.defer_films = defer_films && model.normal.lubrication.active();
+  shear_pending = pass.defer_films && model.tangential.film_active();
+  clear_films();
+  pass.kick_time =
+      lub::film_kick_time(update->dt, pass.when != lub::Evaluation::step, pass.when == lub::Evaluation::midpoint_start);
+
+  // m_e = m; the body's mass for an atom of a rigid body; an immovable atom is left alone.
+  // Atoms change index only where the lists are rebuilt (or a run starts).
+  pass.by_inverse = contact_mass.active();
+  const int nlocal = atom->nlocal;
+  if (pass.by_inverse && (neighbor->ago == 0 || update->setupflag || static_cast<int>(inverse_mass.size()) < nlocal)) {
+    if (static_cast<int>(inverse_mass.size()) < nlocal) inverse_mass.resize(atom->nmax);
+    contact_mass.fill(inverse_mass.data());
+  }
+}
+
+void FixWallLubricationBase::apply_contact(int i, double mass, const WallContact &contact)
+{
+  record_sustained(i, contact.gap, contact.u_n, contact.n);
+  const lub::ContactForces forces = contact_forces_of(i, mass, contact);
+  const double normal = defer_contact_films(i, mass, contact, forces);
+  local_sums[0] += forces.normal.energy;
+  add_contact_force(i, lub::scaled(contact.n, normal), model.tangential.active() ? &forces : nullptr);
+}
+
+lub::ContactForces FixWallLubricationBase::contact_forces_of(int i, double mass, const WallContact &contact)
+{
+  lub::ContactPoint p;
+  p.gap = contact.gap, p.u_n = contact.u_n, p.reduced_mass = mass, p.film = contact.film;
+  p.load = contact.load;
+  lub::HistorySlot slot;
+  double *h = contact.history;
+  const bool tangential_on = model.tangential.active();
+  if (tangential_on) {
+    p.n = contact.n;
+    p.dv = contact.dv;
+    p.omega_i = contact.omega;
+    p.radius_i = atom->radius[i], p.reduced_radius = contact.reduced_radius;
+    p.mass_i = atom->rmass[i];    // the sphere's own inertia, also in a rigid body
+    if (h) slot = {h, h[3] != 0.0, !update->setupflag};
+  }
+  const lub::ContactForces forces =
+      tangential_on ? lub::contact_forces<true, lub::Partner::wall>(model, p, slot, pass.when, shear_pending)
+                    : lub::contact_forces<false, lub::Partner::wall>(model, p, slot, pass.when);
+  if (h) h[3] = slot.touched;
+  return forces;
+}
+
+// In a wet run the films wait for post_force, within the atom's film budget: the normal film's
+// force and share, with the shear film its force and torque and the contact's share the larger
+// of the two films' (film_budget.h). Returns the normal force to apply now.
+double FixWallLubricationBase::defer_contact_films(int i, double mass, const WallContact &contact,
+                                                   const lub::ContactForces &forces)
+{
+  const lub::NormalForce &fn = forces.normal;
+  if (!pass.defer_films) return fn.total();
+  const std::size_t entry = film_entry(i);
+  double *ff = &film_force[3 * entry];
+  const lub::Vec3 &n = contact.n;
+  ff[0] += fn.lubrication * n.x, ff[1] += fn.lubrication * n.y, ff[2] += fn.lubrication * n.z;
+  const double share = lub::film_share(fn.lubrication, mass, contact.u_n, pass.kick_time);
+  if (!shear_pending) {
+    film_load[entry] += share;
+    return fn.contact;
+  }
+  film_load[entry] += lub::contact_film_share(share, forces.shear_share(pass.kick_time));
+  double *out = &shear_film[6 * entry];
+  out[0] += forces.shear.x, out[1] += forces.shear.y, out[2] += forces.shear.z;
+  out[3] += forces.shear_torque_i.x, out[4] += forces.shear_torque_i.y, out[5] += forces.shear_torque_i.z;
+  return fn.contact;
+}
+
+// The contact's normal force, and its tangential force and torque where the model has them, on
+// atom i and in the sums.
+void FixWallLubricationBase::add_contact_force(int i, const lub::Vec3 &normal, const lub::ContactForces *tangential)
+{
+  double *fi = atom->f[i];
+  if (!tangential) {
+    fi[0] += normal.x, fi[1] += normal.y, fi[2] += normal.z;
+    tally(i, normal, lub::Vec3());
+    return;
+  }
+  const lub::Vec3 &torque = tangential->torque_i;
+  double *ti = atom->torque[i];
+  ti[0] += torque.x, ti[1] += torque.y, ti[2] += torque.z;
+  if (adds_tangential_apart) {
+    const lub::Vec3 &force = tangential->tangential;
+    fi[0] += normal.x, fi[1] += normal.y, fi[2] += normal.z;
+    tally(i, normal, lub::Vec3());
+    fi[0] += force.x, fi[1] += force.y, fi[2] += force.z;
+    tally(i, force, torque);
+    return;
+  }
+  const lub::Vec3 force = lub::plus(normal, tangential->tangential);
+  fi[0] += force.x, fi[1] += force.y, fi[2] += force.z;
+  tally(i, force, torque);
+}
