@@ -16,7 +16,6 @@
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/check_setup.h"
 #include "lubricated/film_budget.h"
-#include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
 
 #include "atom.h"
 #include "comm.h"

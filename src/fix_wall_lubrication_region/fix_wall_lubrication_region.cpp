@@ -14,7 +14,6 @@
 #include "lubricated/check_setup.h"
 #include "lubricated/film_budget.h"
 #include "lubricated/wall_curvature.h"
-#include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
 
 #include "atom.h"
 #include "comm.h"
