@@ -303,12 +303,17 @@ void PairLubricatedSpringDashpot::read_restart(FILE *fp)
 // Every per-type, per-atom and per-pair array of the style (the history is its fix's).
 double PairLubricatedSpringDashpot::memory_usage()
 {
+  const double doubles = maxrad.capacity() + max_reach.capacity() + inverse_mass.capacity();
+  return Pair::memory_usage() + coeffs.capacity() * sizeof(lub::Coefficients) +
+         models.capacity() * sizeof(lub::ContactModel) + doubles * sizeof(double) + loop_lists.memory_usage() +
+         budget.memory_usage() + network.memory_usage();
+}
+
+double PairLubricatedSpringDashpot::LoopLists::memory_usage() const
+{
   const double ints = candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity() + film_i.capacity() +
                       film_j.capacity() + group_count.capacity() + group_keys.capacity();
-  const double doubles = maxrad.capacity() + max_reach.capacity() + step_reach.capacity() + inverse_mass.capacity();
-  return Pair::memory_usage() + coeffs.capacity() * sizeof(lub::Coefficients) +
-         models.capacity() * sizeof(lub::ContactModel) + ints * sizeof(int) + doubles * sizeof(double) +
-         budget.memory_usage() + network.memory_usage();
+  return ints * sizeof(int) + step_reach.capacity() * sizeof(double);
 }
 
 // write_data: the pair_coeff words of each type pair (Pair Coeffs: i i; PairIJ Coeffs: i <= j),

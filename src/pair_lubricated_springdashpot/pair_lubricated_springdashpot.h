@@ -69,10 +69,17 @@ class PairLubricatedSpringDashpot : public Pair, public FilmBudgetOwner, private
   bool verlet_velocities = false;                    // fix nve/sphere integrates all (single())
   bool step_velocities_used = false;                 // the last evaluation took v^(n+1/2)
   bool continued = false;                            // this set-up continues the last run
-  // List entries kept by eval's first pass: i, j and (with friction, for the history) jj.
-  std::vector<int> candidate_i, candidate_j, candidate_jj;
+  // The pair loops' own lists (eval): the list entries kept by pass 1 (candidate: i, j and with
+  // friction, for the history, jj) and its film-only pairs (film), per atom its radius grown by
+  // the bound on its move in one step (step_reach), and pass 2's grouping of a chunk by type
+  // pair (vector_forces.h).
+  struct LoopLists {
+    std::vector<int> candidate_i, candidate_j, candidate_jj, film_i, film_j;
+    std::vector<double> step_reach;
+    std::vector<int> group_count, group_keys;
+    double memory_usage() const;
+  } loop_lists;
   void grow_pair_lists(std::vector<int> &list_i, std::vector<int> &list_j, std::vector<int> *list_jj, int need);
-  std::vector<double> step_reach;    // per atom: radius + bound on its move in one step
   // This evaluation's counts (compute pair, pvector): the pairs pass 1 selected (in contact,
   // within a step of it, in a film's reach, or holding an elongation) and, of those, the pairs
   // apart by more than both atoms move in the step, in a film's reach, holding no elongation
@@ -88,8 +95,6 @@ class PairLubricatedSpringDashpot : public Pair, public FilmBudgetOwner, private
   // Friction or rolling: the film-only pairs vectorised (normal and shear film), and the pairs in
   // sustained contact with friction (not rolling) that touched at the last step.
   bool film_loops = false;
-  std::vector<int> film_i, film_j;
-  std::vector<int> group_count, group_keys;    // grouping a chunk by type pair
 
   // Ghost communication of the per-atom sums below (the comm callbacks delegate to it).
   AtomVectorComm exchange;
@@ -171,6 +176,10 @@ class PairLubricatedSpringDashpot : public Pair, public FilmBudgetOwner, private
                                                                   const lubricated::ContactModel &model,
                                                                   lubricated::ContactPoint &p,
                                                                   lubricated::HistorySlot &slot);
+  template <bool WET, bool TANGENTIAL>
+  __attribute__((always_inline)) inline void contact(const PairLoop &loop, int i, int j, int jj,
+                                                     const lubricated::ContactModel &model, lubricated::ContactPoint &p,
+                                                     const double *del, double rinv);
   template <bool TANGENTIAL>
   __attribute__((always_inline)) inline void apply_pair_force(const PairLoop &loop, int i, int j, const double *del,
                                                               double fpair, const lubricated::Vec3 &tangential,

@@ -41,8 +41,8 @@ void PairLubricatedSpringDashpot::update_step_reach(double **v)
   const double dt = update->dt;
   const double *radius = atom->radius;
   const int nall = atom->nlocal + atom->nghost;
-  if (static_cast<int>(step_reach.size()) < nall) step_reach.resize(atom->nmax);
-  double *out = step_reach.data();
+  if (static_cast<int>(loop_lists.step_reach.size()) < nall) loop_lists.step_reach.resize(atom->nmax);
+  double *out = loop_lists.step_reach.data();
   if (nall == 0) return;    // no atoms: maybe no velocity array
   // The velocities as the block they are (3 per atom, or the midpoint integrator's rows): a loop
   // the compiler vectorises.
@@ -67,8 +67,8 @@ void PairLubricatedSpringDashpot::update_step_reach(double **v)
 template <bool WET, bool TANGENTIAL, bool SPLIT, bool UNIFORM_REACH>
 int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
 {
-  const double *x = atom->x[0];               // positions, 3 per atom (one block)
-  const double *grown = step_reach.data();    // grown radii (update_step_reach)
+  const double *x = atom->x[0];                          // positions, 3 per atom (one block)
+  const double *grown = loop_lists.step_reach.data();    // grown radii (update_step_reach)
   const int *type = atom->type;
   const int inum = list->inum;
   const int *ilist = list->ilist;
@@ -92,13 +92,15 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
     const int *jlist = firstneigh[i];
     const char *touched = TANGENTIAL && history ? history->touched(i) : nullptr;
     // candidate_jj only grows with friction: a run that adds friction finds it shorter.
-    if (ncandidate + jnum > static_cast<int>(candidate_i.size()) ||
-        (TANGENTIAL && candidate_jj.size() < candidate_i.size()))
-      grow_pair_lists(candidate_i, candidate_j, TANGENTIAL ? &candidate_jj : nullptr, ncandidate + jnum);
-    if (WET && SPLIT && nfilm_here + jnum > static_cast<int>(film_i.size()))
-      grow_pair_lists(film_i, film_j, nullptr, nfilm_here + jnum);
-    int *out_i = candidate_i.data(), *out_j = candidate_j.data(), *out_jj = candidate_jj.data();
-    int *film_out_i = film_i.data(), *film_out_j = film_j.data();
+    if (ncandidate + jnum > static_cast<int>(loop_lists.candidate_i.size()) ||
+        (TANGENTIAL && loop_lists.candidate_jj.size() < loop_lists.candidate_i.size()))
+      grow_pair_lists(loop_lists.candidate_i, loop_lists.candidate_j, TANGENTIAL ? &loop_lists.candidate_jj : nullptr,
+                      ncandidate + jnum);
+    if (WET && SPLIT && nfilm_here + jnum > static_cast<int>(loop_lists.film_i.size()))
+      grow_pair_lists(loop_lists.film_i, loop_lists.film_j, nullptr, nfilm_here + jnum);
+    int *out_i = loop_lists.candidate_i.data(), *out_j = loop_lists.candidate_j.data(),
+        *out_jj = loop_lists.candidate_jj.data();
+    int *film_out_i = loop_lists.film_i.data(), *film_out_j = loop_lists.film_j.data();
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double *xj = x + 3 * static_cast<std::size_t>(j);
@@ -187,6 +189,45 @@ inline void PairLubricatedSpringDashpot::apply_pair_force(const PairLoop &loop, 
   }
 }
 
+// The whole contact of a pair at its contact point p (normal direction del * rinv), the film
+// budget's records, the torques, forces and tallies.
+template <bool WET, bool TANGENTIAL>
+inline void PairLubricatedSpringDashpot::contact(const PairLoop &loop, int i, int j, int jj,
+                                                 const lub::ContactModel &model, lub::ContactPoint &p,
+                                                 const double *del, double rinv)
+{
+  const int nlocal = loop.nlocal, newton_pair = loop.newton_pair;
+  const double kick_time = loop.kick_time;
+  const bool records = WET && loop.budget;
+  // Without tangential parts the normal force alone (a whole ContactForces would cost a zero
+  // fill per pair).
+  lub::NormalForce fn;
+  double share = 0.0;
+  lub::Vec3 tangential;
+  if constexpr (TANGENTIAL) {
+    lub::HistorySlot slot;
+    p.n = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
+    set_tangential_point(loop, i, j, jj, model, p, slot);
+    const lub::ContactForces c = lub::contact_forces<true>(model, p, slot, loop.when);
+    fn = c.normal;
+    if (history) history->touched(i)[jj] = slot.touched;
+    if (records) share = lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time);
+    if (records && budget.records_shear())
+      budget.record_films(i, j, fn.lubrication, c.shear, lub::contact_film_share(share, c.shear_share(kick_time)),
+                          nlocal, newton_pair);
+    tangential = c.tangential;
+    loop.torque[i][0] += c.torque_i.x, loop.torque[i][1] += c.torque_i.y, loop.torque[i][2] += c.torque_i.z;
+    if (newton_pair || j < nlocal)
+      loop.torque[j][0] += c.torque_j.x, loop.torque[j][1] += c.torque_j.y, loop.torque[j][2] += c.torque_j.z;
+  } else {
+    fn = lub::normal_force(model.normal, p.gap, p.film, p.reduced_mass, p.u_n, loop.when);
+    if (records) share = lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time);
+  }
+  if (records && !(TANGENTIAL && budget.records_shear()))
+    budget.record_film(i, j, fn.lubrication, share, nlocal, newton_pair);
+  apply_pair_force<TANGENTIAL>(loop, i, j, del, fn.total() * rinv, tangential, fn.energy);
+}
+
 // Pass 2: one pair kept by pass 1 (jj, its place in i's neighbor list, for the history only):
 // the whole contact (lubricated/contact.h), the film budget's records, forces, torques, tallies.
 template <bool WET, bool TANGENTIAL>
@@ -194,9 +235,7 @@ inline void PairLubricatedSpringDashpot::evaluate_pair(const PairLoop &loop, con
 {
   double **x = loop.x, **v = loop.v;
   const double *radius = loop.radius, *rmass = loop.rmass, *inverse = loop.inverse;
-  const int nlocal = loop.nlocal, newton_pair = loop.newton_pair;
-  const double dt = loop.dt, kick_time = loop.kick_time;
-  const bool records = WET && loop.budget;
+  const double dt = loop.dt;
   const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
   const double delx = del[0], dely = del[1], delz = del[2];
   const double rsq = delx * delx + dely * dely + delz * delz;
@@ -239,33 +278,7 @@ inline void PairLubricatedSpringDashpot::evaluate_pair(const PairLoop &loop, con
     forget();
     return;
   }
-  // Without tangential parts the normal force alone (a whole ContactForces would cost a zero
-  // fill per pair).
-  lub::NormalForce fn;
-  double share = 0.0;
-  lub::Vec3 tangential;
-  if constexpr (TANGENTIAL) {
-    lub::HistorySlot slot;
-    p.n = {delx * rinv, dely * rinv, delz * rinv};
-    set_tangential_point(loop, i, j, jj, model, p, slot);
-    const lub::ContactForces c = lub::contact_forces<true>(model, p, slot, loop.when);
-    fn = c.normal;
-    if (history) history->touched(i)[jj] = slot.touched;
-    if (records) share = lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time);
-    if (records && budget.records_shear())
-      budget.record_films(i, j, fn.lubrication, c.shear, lub::contact_film_share(share, c.shear_share(kick_time)),
-                          nlocal, newton_pair);
-    tangential = c.tangential;
-    loop.torque[i][0] += c.torque_i.x, loop.torque[i][1] += c.torque_i.y, loop.torque[i][2] += c.torque_i.z;
-    if (newton_pair || j < nlocal)
-      loop.torque[j][0] += c.torque_j.x, loop.torque[j][1] += c.torque_j.y, loop.torque[j][2] += c.torque_j.z;
-  } else {
-    fn = lub::normal_force(model.normal, p.gap, p.film, p.reduced_mass, p.u_n, loop.when);
-    if (records) share = lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time);
-  }
-  if (records && !(TANGENTIAL && budget.records_shear()))
-    budget.record_film(i, j, fn.lubrication, share, nlocal, newton_pair);
-  apply_pair_force<TANGENTIAL>(loop, i, j, del, fn.total() * rinv, tangential, fn.energy);
+  contact<WET, TANGENTIAL>(loop, i, j, jj, model, p, del, rinv);
 }
 
 // One film reach for every type pair: pass 1 then looks up no types.
@@ -327,7 +340,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     film_only_pairs += nfilm;
     if (!SPLIT) nfilm = 0;    // counted only: no film-only list
     if (network_due)
-      network.check({candidate_i.data(), candidate_j.data(), ncandidate,
+      network.check({loop_lists.candidate_i.data(), loop_lists.candidate_j.data(), ncandidate,
                      inverse_mass_on ? inverse_mass.data() : nullptr, midpoint, coeffs.data()});
     if (loop.budget) budget.reserve_records(ncandidate + nfilm);
     if constexpr (SPLIT && !TANGENTIAL) {
@@ -344,7 +357,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
       vector_forces<true>(0, nfilm, v, loop.omega, evaluate);
     }
     for (int c = 0; c < ncandidate; c++)
-      evaluate(candidate_i[c], candidate_j[c], TANGENTIAL ? candidate_jj[c] : 0);
+      evaluate(loop_lists.candidate_i[c], loop_lists.candidate_j[c], TANGENTIAL ? loop_lists.candidate_jj[c] : 0);
   } while (next < list->inum);
 }
 

@@ -50,14 +50,16 @@ template <bool TANGENTIAL, class Evaluate> class PairLubricatedSpringDashpot::Ve
   void run(int ncandidate, int nfilm)
   {
     if (TANGENTIAL) {
-      run_list(pair.film_i.data(), pair.film_j.data(), nullptr, nfilm, [this](auto &&...a) { film_shear_pairs(a...); });
-      run_list(pair.candidate_i.data(), pair.candidate_j.data(), pair.candidate_jj.data(), ncandidate,
-               [this](auto &&...a) { friction_pairs(a...); });
+      run_list(pair.loop_lists.film_i.data(), pair.loop_lists.film_j.data(), nullptr, nfilm,
+               [this](auto &&...a) { film_shear_pairs(a...); });
+      run_list(pair.loop_lists.candidate_i.data(), pair.loop_lists.candidate_j.data(),
+               pair.loop_lists.candidate_jj.data(), ncandidate, [this](auto &&...a) { friction_pairs(a...); });
       run_friction_events();
       return;
     }
-    run_list(pair.film_i.data(), pair.film_j.data(), nullptr, nfilm, [this](auto &&...a) { film_pairs(a...); });
-    run_list(pair.candidate_i.data(), pair.candidate_j.data(), nullptr, ncandidate,
+    run_list(pair.loop_lists.film_i.data(), pair.loop_lists.film_j.data(), nullptr, nfilm,
+             [this](auto &&...a) { film_pairs(a...); });
+    run_list(pair.loop_lists.candidate_i.data(), pair.loop_lists.candidate_j.data(), nullptr, ncandidate,
              [this](auto &&...a) { kept_pairs(a...); });
     run_exits();
     run_events();
@@ -374,7 +376,7 @@ template <bool TANGENTIAL, class Evaluate> class PairLubricatedSpringDashpot::Ve
   // entries, with friction) is grouped with the pairs where given.
   template <class Pairs> void run_list(const int *list_i, const int *list_j, const int *list_jj, int count, Pairs pairs)
   {
-    std::vector<int> &group_count = pair.group_count;
+    std::vector<int> &group_count = pair.loop_lists.group_count;
     group_count.resize(pair.models.size(), 0);    // all zero between chunks
     for (int start = 0; start < count; start += chunk) {
       const int n = std::min(chunk, count - start);
@@ -386,7 +388,7 @@ template <bool TANGENTIAL, class Evaluate> class PairLubricatedSpringDashpot::Ve
       }
       group_by_type_pair(pair_i, pair_j, pair_jj, n);
       int begin = 0;
-      for (int k : pair.group_keys) {
+      for (int k : pair.loop_lists.group_keys) {
         pairs(pair.models[k], grouped_i + begin, grouped_j + begin, grouped_jj + begin, group_count[k] - begin);
         begin = group_count[k];
         group_count[k] = 0;
@@ -398,7 +400,7 @@ template <bool TANGENTIAL, class Evaluate> class PairLubricatedSpringDashpot::Ve
   // met); group_count[k] is left at the end of group k.
   void group_by_type_pair(const int *pair_i, const int *pair_j, const int *pair_jj, int n)
   {
-    std::vector<int> &group_count = pair.group_count, &group_keys = pair.group_keys;
+    std::vector<int> &group_count = pair.loop_lists.group_count, &group_keys = pair.loop_lists.group_keys;
     group_keys.clear();
     for (int c = 0; c < n; c++) {
       key[c] = pair.index(type[pair_i[c]], type[pair_j[c]]);
