@@ -1,7 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
    pair_style lubricated/springdashpot: the collision model of Brandle de Motta et al.
    (CFM 2011) for finite-size spheres. A thin adapter: neighbour loop, ghost data,
-   tallies and restart; the physics lives in src/lubricated/.
+   tallies and restart; the physics lives in src/lubricated/. The many-body film budget
+   (film_budget/film_budget.h) and the contact-network check
+   (contact_network/contact_network_check.h) are classes of their own, which the wall fixes
+   reach through interfaces (film_budget_participant.h, contact_network_participant.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_LUBRICATED_SPRINGDASHPOT_H
