@@ -7,14 +7,15 @@
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/check_setup.h"
+#include "film_budget/film_budget.h"
 #include "lubricated/film_budget.h"
-#include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
 
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
 #include "modify.h"
+#include "pair.h"
 #include "update.h"
 #include "utils.h"
 
@@ -52,8 +53,9 @@ void FixWallLubricationBase::init_model(const char *style, const std::string &wh
   // step, which that fix provides (see pair_style lubricated/springdashpot).
   midpoint = FixNVESphereMidpoint::in_use(lmp, style);
   step_velocity = midpoint ? nullptr : dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
-  pair = dynamic_cast<PairLubricatedSpringDashpot *>(force->pair_match("lubricated/springdashpot", 1));
-  contact_mass.init(style, !pair);    // the pair style logs them where there is one
+  auto *budget_owner = dynamic_cast<FilmBudgetOwner *>(force->pair_match("lubricated/springdashpot", 1));
+  pair_budget = budget_owner ? &budget_owner->film_budget() : nullptr;
+  contact_mass.init(style, !pair_budget);    // the pair style logs them where there is one
   films_pending = false;
   find_gravity();
 }
@@ -169,8 +171,8 @@ void FixWallLubricationBase::apply_films()
   if (!films_pending) return;
   films_pending = false;
   double **f = atom->f, **torque = atom->torque;
-  const bool by_pair = pair && pair->keeps_film_budget();
-  const bool own = !pair;
+  const bool by_pair = pair_budget && pair_budget->kept();
+  const bool own = !pair_budget;
   const double *shear = shear_pending ? shear_film.data() : nullptr;
   for (std::size_t e = 0; e < film_atom.size(); e++) {
     const int i = film_atom[e];
@@ -178,7 +180,7 @@ void FixWallLubricationBase::apply_films()
     const double *fs = shear ? shear + 6 * e : nullptr;
     const bool film = ff[0] != 0.0 || ff[1] != 0.0 || ff[2] != 0.0;
     if (!film && !(fs && (fs[0] != 0.0 || fs[1] != 0.0 || fs[2] != 0.0))) continue;
-    const double scale = by_pair ? pair->film_scale(i) : own ? lub::film_scale_of_load(film_load[i]) : 1.0;
+    const double scale = by_pair ? pair_budget->scale(i) : own ? lub::film_scale_of_load(film_load[i]) : 1.0;
     lub::Vec3 force = lub::scaled({ff[0], ff[1], ff[2]}, scale), moment;
     if (fs) {
       force = lub::plus(force, lub::scaled({fs[0], fs[1], fs[2]}, scale));

@@ -17,6 +17,8 @@
 #include "update.h"
 
 #include "contact_mass/contact_mass.h"
+#include "contact_network/contact_network_participant.h"
+#include "film_budget/film_budget_participant.h"
 #include "lubricated/contact.h"
 
 #include <cmath>
@@ -25,7 +27,7 @@
 
 namespace LAMMPS_NS {
 
-class FixWallLubricationBase : public Fix {
+class FixWallLubricationBase : public Fix, public FilmBudgetParticipant, public ContactNetworkParticipant {
  public:
   FixWallLubricationBase(class LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), contact_mass(lmp) {}
 
@@ -43,31 +45,25 @@ class FixWallLubricationBase : public Fix {
   double compute_vector(int) override;
   double memory_usage() override;    // the deferred films and contact masses; walls add their histories
 
-  bool wet() const { return coeffs.wet(); }
+  bool wet() const override { return coeffs.wet(); }
   // Adds this step's wall-film shares to the owned atoms' loads of the many-body film budget
-  // (lubricated/film_budget.h; pair_style lubricated/springdashpot sums them with its own).
-  void add_film_loads(double *load, int nlocal) const;
-  // Adds to each owned atom the bound on its wet walls' film shares (film_budget.h).
-  virtual void add_film_share_bounds(double *bound, int nlocal) const = 0;
+  // (film_budget/film_budget.h, which sums them with the pair style's).
+  void add_film_loads(double *load, int nlocal) const override;
+  // Adds to each owned atom the bound on its wet walls' film shares (lubricated/film_budget.h).
+  void add_film_share_bounds(double *bound, int nlocal) const override = 0;
 
   // The contacts of the last evaluation in overlap then and a step before (sustained), for the
-  // pair style's contact-network check (lubricated/contact_network.h): the atom's ID and the
-  // wall's normal. Recorded by ID: a dry wall's are the last step's, whose atoms a rebuild may
-  // have reordered since.
-  struct SustainedContact {
-    tagint tag;
-    double n[3];
-  };
-  const std::vector<SustainedContact> &sustained_contacts() const { return sustained; }
-  const lubricated::ContactModel &contact_model() const { return model; }
-  const lubricated::Coefficients &coefficients() const { return coeffs; }
+  // pair style's contact-network check (contact_network/contact_network_check.h).
+  const std::vector<SustainedContact> &sustained_contacts() const override { return sustained; }
+  const lubricated::ContactModel &contact_model() const override { return model; }
+  const lubricated::Coefficients &coefficients() const override { return coeffs; }
 
  protected:
   lubricated::Coefficients coeffs;
   lubricated::ContactModel model;                    // derived from coeffs and dt
   class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
   class FixStepVelocity *step_velocity = nullptr;    // the last step's velocities for a set-up
-  class PairLubricatedSpringDashpot *pair = nullptr;
+  const class FilmBudget *pair_budget = nullptr;    // the lubricated pair style's, if there is one
 
   // One contact of an atom with a wall, as a wall style finds it.
   struct WallContact {

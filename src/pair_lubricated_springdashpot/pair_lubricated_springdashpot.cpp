@@ -7,15 +7,8 @@
 #include "unit_style/unit_style.h"
 #include "vector_pairs.h"
 
-#include "fix_contact_history/fix_contact_history.h"
-#include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_step_velocity/fix_step_velocity.h"
-#include "fix_wall_lubrication/fix_wall_lubrication_base.h"
 #include "lubricated/check_setup.h"
-#include "lubricated/contact_network.h"
-#include "lubricated/contact_network_message.h"
-#include "lubricated/contact_network_ranks.h"
-#include "lubricated/film_budget.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -32,7 +25,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <set>
 #include <string>
 
 using namespace LAMMPS_NS;
@@ -40,7 +32,8 @@ namespace lub = lubricated;
 
 static constexpr const char *STYLE = "Pair style lubricated/springdashpot";
 
-PairLubricatedSpringDashpot::PairLubricatedSpringDashpot(LAMMPS *lmp) : Pair(lmp), contact_mass(lmp)
+PairLubricatedSpringDashpot::PairLubricatedSpringDashpot(LAMMPS *lmp) :
+    Pair(lmp), exchange(lmp, this), budget(lmp, exchange), contact_mass(lmp), network(lmp, exchange, STYLE)
 {
   ContactMass::watch_setforce(lmp);    // again after a `clear`
   single_enable = 1;
@@ -88,8 +81,7 @@ void PairLubricatedSpringDashpot::allocate()
   coeffs.assign((n + 1) * (n + 1), lub::Coefficients());
   models.assign((n + 1) * (n + 1), lub::ContactModel());
   max_reach.assign((n + 1) * (n + 1), 0.0);
-  network_load.assign((n + 1) * (n + 1), 0.0);
-  network_bound.assign((n + 1) * (n + 1), 0.0);
+  network.allocate(n);
   maxrad.assign(n + 1, 0.0);
   cutoff_given.assign((n + 1) * (n + 1), 0.0);
 }
@@ -194,220 +186,6 @@ void PairLubricatedSpringDashpot::coeff(int narg, char **arg)
   if (count == 0) error->all(FLERR, "{}: incorrect atom types in pair_coeff {} {}", STYLE, arg[0], arg[1]);
 }
 
-void PairLubricatedSpringDashpot::init_style()
-{
-  require_supported_units(lmp, STYLE);
-  if (!atom->radius_flag || !atom->rmass_flag)
-    error->all(FLERR, "{} requires atom_style sphere (per-atom radius and rmass)", STYLE);
-  if (comm->ghost_velocity == 0)
-    error->all(FLERR, "{} requires ghost atoms to store velocity: use comm_modify vel yes", STYLE);
-
-  const int n = atom->ntypes;
-  any_wet = any_tangential = false;
-  network_check = network_warned = false;    // set by init_one (set_network_loads)
-  network_next = 0;                          // the first step of the run
-  bool any_friction = false, any_shear_film = false;
-  std::set<std::string> advice;
-  for (int i = 1; i <= n; i++)
-    for (int j = i; j <= n; j++) {
-      if (!setflag[i][j]) continue;
-      lub::settle_contact_time(coeffs[index(i, j)], update->dt);
-      coeffs[index(j, i)] = coeffs[index(i, j)];
-      const lub::Coefficients &c = coeffs[index(i, j)];
-      const lub::SetupCheck check = lub::check_setup(c, lub::Partner::particle, update->dt);
-      if (!check.error.empty()) error->all(FLERR, "{} types {} {}: {}", STYLE, i, j, check.error);
-      advice.insert(check.warnings.begin(), check.warnings.end());
-      any_wet = any_wet || c.wet();
-      any_tangential = any_tangential || c.tangential();
-      any_friction = any_friction || c.friction > 0.0;
-      any_shear_film = any_shear_film || (c.wet() && c.shear_film());
-    }
-  if (any_tangential && !(atom->omega_flag && atom->torque_flag))
-    error->all(FLERR,
-               "{} with friction, rolling or shearfilm requires per-atom omega and torque "
-               "(atom_style sphere)",
-               STYLE);
-  // Friction needs the tangential elongation of every contact, kept by a fix of our own
-  // that follows atoms across neighbor-list rebuilds, ranks and restart files.
-  if (any_friction && !history) {
-    const std::string command = history_id + " all LUBRICATED_HISTORY 3";
-    history = dynamic_cast<FixContactHistory *>(modify->get_fix_by_id(history_slot_id())
-                                                    ? modify->replace_fix(history_slot_id(), command, 1)
-                                                    : modify->add_fix(command));
-    if (!history) error->all(FLERR, "{}: could not create its contact-history fix", STYLE);
-    // Friction added after a run: the neighbor list of that run is kept (init_list is not
-    // called again while the requests are unchanged) and is the one the history follows.
-    if (list) history->set_list(list);
-  }
-  // With a history the list is trimmed before the history is laid onto its entries.
-  if (history) history->before_mapping = [this]() { trim_list_to_reach(); };
-  if (!any_friction && history) {
-    modify->replace_fix(history_id, history_slot_id() + " all DUMMY", 1);
-    history = nullptr;
-  }
-  if (comm->me == 0)
-    for (const auto &msg : advice)
-      if (!msg.empty()) error->warning(FLERR, "{}: {}", STYLE, msg);
-  // Under pair_style hybrid each instance of the style keeps its own film budget, and fix
-  // wall/lubrication joins none where there are several (fix_wall_lubrication_base.cpp).
-  // (pair_match gives the only instance for any nsub, and each of several for its own.)
-  if (any_wet && comm->me == 0 && utils::strmatch(force->pair_style, "^hybrid") &&
-      force->pair_match("lubricated/springdashpot", 1, 1) != force->pair_match("lubricated/springdashpot", 1, 2))
-    error->warning(FLERR,
-                   "{}: several instances under pair_style hybrid: each keeps the many-body film "
-                   "budget of its own pairs, and fix wall/lubrication joins none, so a sphere with films "
-                   "of two is not held within one budget (limit atom); give every type pair to one "
-                   "instance, whose pair_coeff takes coefficients per type pair",
-                   STYLE);
-
-  // Under fix nve/sphere/midpoint forces are evaluated with the extrapolated V~; the step-exact
-  // integration needs the velocity over the last step instead, which that fix provides.
-  midpoint = FixNVESphereMidpoint::in_use(lmp, STYLE);
-  // Under velocity Verlet a run's set-up continues the last run's steps where it can.
-  step_velocity = midpoint ? nullptr : FixStepVelocity::find_or_create(lmp);
-  verlet_velocities = step_velocity && step_velocity->integrated_by_nve_sphere();
-
-  // The vectorised loops need the step velocity in v and exactly integrated normal forces;
-  // type pairs with other coefficients are grouped by type pair (vector_forces).
-  vector_loops = vector_enabled && !any_tangential && !midpoint;
-  // With friction or rolling, the pairs apart over a step feel the normal and shear films
-  // alone: they take a vectorised film loop too; and the sustained frictional contacts theirs.
-  film_loops = vector_enabled && any_tangential && !midpoint;
-  uniform_models = true;
-  double first[lub::Coefficients::packed_size], other[lub::Coefficients::packed_size];
-  coeffs[index(1, 1)].pack(first);
-  for (int i = 1; i <= n; i++)
-    for (int j = i; j <= n; j++) {
-      if (!setflag[i][j]) continue;
-      coeffs[index(i, j)].pack(other);
-      vector_loops = vector_loops && coeffs[index(i, j)].exact_contact;
-      film_loops = film_loops && coeffs[index(i, j)].exact_contact;
-      uniform_models = uniform_models && std::equal(first, first + lub::Coefficients::packed_size, other);
-    }
-  if (vector_loops && comm->me == 0)
-    utils::logmesg(lmp,
-                   "{}: pairs in sustained contact{}, and contacts that start or end within a step (without "
-                   "legendre), take vectorised loops\n",
-                   STYLE, any_wet ? " or apart over a step" : "");
-  if (film_loops && any_wet && comm->me == 0)
-    utils::logmesg(lmp, "{}: pairs apart over a step take the vectorised film loop\n", STYLE);
-  if (film_loops && history && comm->me == 0)
-    utils::logmesg(lmp,
-                   "{}: pairs in sustained frictional contact take a vectorised loop, and contacts that start or "
-                   "end within a step (without legendre) another\n",
-                   STYLE);
-
-  // The many-body film budget covers the films of these pairs and of the wet walls.
-  walls.clear();
-  bool wet_walls = false;
-  for (Fix *ifix : modify->get_fix_list()) {    // fix wall/lubrication and wall/lubrication/region
-    auto wall = dynamic_cast<FixWallLubricationBase *>(ifix);
-    if (!wall) continue;
-    walls.push_back(wall);
-    wet_walls = wet_walls || wall->wet();
-  }
-  film_budget = limit_per_atom && (any_wet || wet_walls);
-  shear_records = film_budget && any_shear_film;    // the shear films share the budget
-  if (!film_budget) scale_of_atom.clear();
-  if ((any_wet || wet_walls) && comm->me == 0)
-    utils::logmesg(lmp, "{}: {}\n", STYLE,
-                   film_budget ? "films within each sphere's many-body budget (limit atom)"
-                               : "each film within its own cap only (limit pair)");
-
-  // Immovable atoms and rigid bodies, found anew at every run (fixes and groups may change).
-  contact_mass.init(STYLE, true);
-  inverse_mass_on = contact_mass.active();
-
-  // A dry model acts only in contact: a radius-based list is enough and cheapest. The film
-  // acts beyond contact, where radius-based lists lose pairs on rebuild (LAMMPS PR #4685),
-  // so a wet model asks for a list with per-type cutoffs that cover the whole film.
-  neighbor->add_request(this, any_wet ? NeighConst::REQ_DEFAULT : NeighConst::REQ_SIZE);
-
-  // Point particles are refused; with a grid spacing the smallest spheres have the largest
-  // eps_al (at most 1, as activation).
-  const double r_min_all = smallest_sphere_radius(lmp, STYLE, ~0);
-  for (int i = 1; i <= n; i++)
-    for (int j = i; j <= n; j++) {
-      const std::string problem = setflag[i][j] ? lub::validate_grid_for_radius(coeffs[index(i, j)], r_min_all) : "";
-      if (!problem.empty()) error->all(FLERR, "{} types {} {}: {}", STYLE, i, j, problem);
-    }
-
-  // Largest radius per type: atoms present now, and those fix pour/deposit may insert.
-  std::vector<double> local(n + 1, 0.0);
-  for (int i = 0; i < atom->nlocal; i++)
-    local[atom->type[i]] = MAX(local[atom->type[i]], atom->radius[i]);
-  MPI_Allreduce(local.data(), maxrad.data(), n + 1, MPI_DOUBLE, MPI_MAX, world);
-  for (auto &ifix : modify->get_fix_list())
-    for (int t = 1; t <= n; t++) {
-      int itype = t;
-      auto r = static_cast<double *>(ifix->extract("radius", itype));
-      if (r && *r > maxrad[t]) maxrad[t] = *r;
-    }
-}
-
-void PairLubricatedSpringDashpot::init_list(int id, NeighList *ptr)
-{
-  Pair::init_list(id, ptr);
-  if (history) history->set_list(ptr);
-}
-
-double PairLubricatedSpringDashpot::init_one(int i, int j)
-{
-  if (!setflag[i][j]) error->all(FLERR, "{}: coefficients for atom types {} {} are not set (no mixing)", STYLE, i, j);
-  const lub::Coefficients &c = coeffs[index(i, j)];
-  models[index(i, j)] = models[index(j, i)] = lub::make_contact_model(c, lub::Partner::particle, update->dt);
-  set_network_loads(i, j);
-  if (comm->me == 0) {
-    // Report what was derived (k and c per unit reduced mass, the contact resolution).
-    const lub::SetupCheck check = lub::check_setup(c, lub::Partner::particle, update->dt);
-    utils::logmesg(lmp, "{} types {} {}: {}\n", STYLE, i, j, check.description);
-    if (!check.tangential.empty()) utils::logmesg(lmp, "{} types {} {}: {}\n", STYLE, i, j, check.tangential);
-  }
-
-  const double reach = largest_film_reach(i, j);
-  max_reach[index(i, j)] = max_reach[index(j, i)] = reach;
-  // pair_coeff cutoff replaces the one from the radii (follow_radii checks it covers them).
-  const double given = cutoff_given[index(i, j)];
-  return given > 0.0 ? given : maxrad[i] + maxrad[j] + reach;
-}
-
-// The film of the largest pair of types i, j (maxrad) reaches farthest; 0 for a dry pair.
-double PairLubricatedSpringDashpot::largest_film_reach(int i, int j) const
-{
-  if (!coeffs[index(i, j)].wet() || maxrad[i] <= 0.0 || maxrad[j] <= 0.0) return 0.0;
-  return models[index(i, j)].normal.reach(lub::film_radius_pair(maxrad[i], maxrad[j]).value);
-}
-
-void PairLubricatedSpringDashpot::update_models()
-{
-  const int n = atom->ntypes;
-  for (int i = 1; i <= n; i++)
-    for (int j = i; j <= n; j++)
-      if (setflag[i][j]) {
-        models[index(i, j)] = models[index(j, i)] =
-            lub::make_contact_model(coeffs[index(i, j)], lub::Partner::particle, update->dt, &models[index(i, j)]);
-        set_network_loads(i, j);
-      }
-}
-
-// Load of a sustained contact of these types (contact_network.h): kappa + 2 gamma of its per-step
-// constants, and the larger of it and the tangential spring's (friction) for the upper bound.
-void PairLubricatedSpringDashpot::set_network_loads(int i, int j)
-{
-  double load, bound;
-  lub::network_loads(models[index(i, j)], update->dt, load, bound);
-  network_load[index(i, j)] = network_load[index(j, i)] = load;
-  network_bound[index(i, j)] = network_bound[index(j, i)] = bound;
-  network_check = network_check || bound > lub::network_check_load;
-}
-
-// A new time step: the per-step constants follow it; k and c stay (t_c settled at the first run,
-// lubricated/coefficients.h settle_contact_time).
-void PairLubricatedSpringDashpot::reset_dt()
-{
-  update_models();
-}
-
 void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
@@ -416,15 +194,9 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
   // not with rigid bodies or immovable atoms, whose velocities the reconstruction does not know.
   continued = step_velocity && step_velocity->continues() && !inverse_mass_on;
   step_velocities_used = !update->setupflag || continued;
-  if (update->setupflag) find_network_walls();
+  if (update->setupflag) network.find_participants();
   if (inverse_mass_on && (neighbor->ago == 0 || update->setupflag)) update_inverse_mass();
-  if (!film_budget)
-    film_budget_now = false;
-  else if (neighbor->ago == 0 || update->setupflag || update->dt > film_bound_dt)
-    // The bounds grow with dt (film_budget.h): those of a larger step hold for a smaller one,
-    // so adaptive time stepping recomputes them only where dt grows past theirs.
-    film_budget_now = films_can_exceed_budget();
-  if (film_budget_now) begin_film_budget();
+  budget.begin_step(list, {models.data(), max_reach.data(), ntypes_alloc + 1});
   selected_pairs = film_only_pairs = 0;
   // A scene pays only for what it uses: one loop per combination.
   if (any_tangential) {
@@ -441,7 +213,7 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
     else
       vectorised ? eval<false, false, true>() : eval<false, false>();
   }
-  if (film_budget_now) finish_film_budget();
+  budget.finish(inverse_mass_on ? inverse_mass.data() : nullptr, evflag ? this : nullptr);
   pvector[0] = static_cast<double>(selected_pairs);
   pvector[1] = static_cast<double>(film_only_pairs);
   if (vflag_fdotr) virial_fdotr_compute();
@@ -531,15 +303,17 @@ void PairLubricatedSpringDashpot::read_restart(FILE *fp)
 // Every per-type, per-atom and per-pair array of the style (the history is its fix's).
 double PairLubricatedSpringDashpot::memory_usage()
 {
-  const double ints = candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity() + film_i.capacity() +
-                      film_j.capacity() + group_count.capacity() + group_keys.capacity() + record_i.capacity() +
-                      record_j.capacity() + network_i.capacity() + network_j.capacity();
-  const double doubles = maxrad.capacity() + max_reach.capacity() + network_load.capacity() + network_bound.capacity() +
-                         step_reach.capacity() + inverse_mass.capacity() + load_of_atom.capacity() +
-                         scale_of_atom.capacity() + record_force.capacity() + record_shear.capacity() +
-                         network_sums.capacity();
+  const double doubles = maxrad.capacity() + max_reach.capacity() + inverse_mass.capacity();
   return Pair::memory_usage() + coeffs.capacity() * sizeof(lub::Coefficients) +
-         models.capacity() * sizeof(lub::ContactModel) + ints * sizeof(int) + doubles * sizeof(double);
+         models.capacity() * sizeof(lub::ContactModel) + doubles * sizeof(double) + loop_lists.memory_usage() +
+         budget.memory_usage() + network.memory_usage();
+}
+
+double PairLubricatedSpringDashpot::LoopLists::memory_usage() const
+{
+  const double ints = candidate_i.capacity() + candidate_j.capacity() + candidate_jj.capacity() + film_i.capacity() +
+                      film_j.capacity() + group_count.capacity() + group_keys.capacity();
+  return ints * sizeof(int) + step_reach.capacity() * sizeof(double);
 }
 
 // write_data: the pair_coeff words of each type pair (Pair Coeffs: i i; PairIJ Coeffs: i <= j),

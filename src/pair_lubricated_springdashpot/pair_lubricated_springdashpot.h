@@ -1,7 +1,10 @@
 /* -*- c++ -*- ----------------------------------------------------------
    pair_style lubricated/springdashpot: the collision model of Brandle de Motta et al.
    (CFM 2011) for finite-size spheres. A thin adapter: neighbour loop, ghost data,
-   tallies and restart; the physics lives in src/lubricated/.
+   tallies and restart; the physics lives in src/lubricated/. The many-body film budget
+   (film_budget/film_budget.h) and the contact-network check
+   (contact_network/contact_network_check.h) are classes of their own, which the wall fixes
+   reach through interfaces (film_budget_participant.h, contact_network_participant.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PAIR_LUBRICATED_SPRINGDASHPOT_H
@@ -10,15 +13,19 @@
 #include "pair.h"
 
 #include "contact_mass/contact_mass.h"
+#include "contact_network/contact_network_check.h"
+#include "film_budget/atom_vector_comm.h"
+#include "film_budget/film_budget.h"
 #include "lubricated/contact.h"
 
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace LAMMPS_NS {
 
-class PairLubricatedSpringDashpot : public Pair {
+class PairLubricatedSpringDashpot : public Pair, public FilmBudgetOwner, private FilmBudget::Tally {
  public:
   PairLubricatedSpringDashpot(class LAMMPS *);
   ~PairLubricatedSpringDashpot() override;
@@ -43,10 +50,9 @@ class PairLubricatedSpringDashpot : public Pair {
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
 
-  // The many-body film budget (lubricated/film_budget.h) of this step, for fix wall/lubrication:
-  // whether the pair style keeps it (the walls' loads included), and an owned atom's film scale.
-  bool keeps_film_budget() const { return film_budget; }
-  double film_scale(int i) const { return film_budget_now ? scale_of_atom[i] : 1.0; }
+  // The many-body film budget (film_budget/film_budget.h), for the wall fixes: whether it is
+  // kept (the walls' loads included), and an owned atom's film scale of this step.
+  const FilmBudget &film_budget() const override { return budget; }
 
  protected:
   std::vector<lubricated::Coefficients> coeffs;    // per type pair, (ntypes+1)^2
@@ -66,10 +72,17 @@ class PairLubricatedSpringDashpot : public Pair {
   bool verlet_velocities = false;                    // fix nve/sphere integrates all (single())
   bool step_velocities_used = false;                 // the last evaluation took v^(n+1/2)
   bool continued = false;                            // this set-up continues the last run
-  // List entries kept by eval's first pass: i, j and (with friction, for the history) jj.
-  std::vector<int> candidate_i, candidate_j, candidate_jj;
+  // The pair loops' own lists (eval): the list entries kept by pass 1 (candidate: i, j and with
+  // friction, for the history, jj) and its film-only pairs (film), per atom its radius grown by
+  // the bound on its move in one step (step_reach), and pass 2's grouping of a chunk by type
+  // pair (vector_forces.h).
+  struct LoopLists {
+    std::vector<int> candidate_i, candidate_j, candidate_jj, film_i, film_j;
+    std::vector<double> step_reach;
+    std::vector<int> group_count, group_keys;
+    double memory_usage() const;
+  } loop_lists;
   void grow_pair_lists(std::vector<int> &list_i, std::vector<int> &list_j, std::vector<int> *list_jj, int need);
-  std::vector<double> step_reach;    // per atom: radius + bound on its move in one step
   // This evaluation's counts (compute pair, pvector): the pairs pass 1 selected (in contact,
   // within a step of it, in a film's reach, or holding an elongation) and, of those, the pairs
   // apart by more than both atoms move in the step, in a film's reach, holding no elongation
@@ -85,56 +98,15 @@ class PairLubricatedSpringDashpot : public Pair {
   // Friction or rolling: the film-only pairs vectorised (normal and shear film), and the pairs in
   // sustained contact with friction (not rolling) that touched at the last step.
   bool film_loops = false;
-  std::vector<int> film_i, film_j;
-  std::vector<int> group_count, group_keys;    // grouping a chunk by type pair
 
+  // Ghost communication of the per-atom sums below (the comm callbacks delegate to it).
+  AtomVectorComm exchange;
   // Many-body film budget (`limit atom`, the default; `limit pair`: each pair's own cap only).
-  // Per owned and ghost atom: the summed film share and its scale; per pair with a film: i, j
-  // and its film force (along n), applied in full by the loops and scaled down afterwards.
   bool limit_per_atom = true;
-  bool film_budget = false;
-  std::vector<class FixWallLubricationBase *> walls;    // the wall fixes: their films share the atoms' budget
-  std::vector<double> load_of_atom, scale_of_atom;
-  std::vector<int> record_i, record_j;
-  std::vector<double> record_force;
-  int nrecord = 0;
-  enum { COMM_LOAD, COMM_SCALE, COMM_MASS, COMM_NETWORK } comm_what = COMM_LOAD;
-  // Whether this step's films can exceed any atom's budget (from the bounds of the contacts
-  // the neighbor list allows until its next build; film_budget.h): if not, the budget is skipped.
-  bool film_budget_now = false;
-  double film_bound_dt = 0.0;
-  bool films_can_exceed_budget();
-  void begin_film_budget();
-  void reserve_records(int more);
-  __attribute__((always_inline)) inline void record_film(int i, int j, double film, double share, int nlocal,
-                                                         int newton_pair)
-  {
-    load_of_atom[i] += share;
-    if (newton_pair || j < nlocal) load_of_atom[j] += share;
-    record_i[nrecord] = i;
-    record_j[nrecord] = j;
-    record_force[nrecord] = film;
-    nrecord += film != 0.0;
-  }
-  // With a shear film on some type pair (shear_records), the tangential loop records each
-  // pair's shear film force too (3 per record, on i) and its contact's share, the larger of the
-  // normal and shear films' (film_budget.h); both films are scaled by the same s.
-  bool shear_records = false;
-  std::vector<double> record_shear;
-  __attribute__((always_inline)) inline void record_films(int i, int j, double film, const lubricated::Vec3 &shear,
-                                                          double share, int nlocal, int newton_pair)
-  {
-    load_of_atom[i] += share;
-    if (newton_pair || j < nlocal) load_of_atom[j] += share;
-    record_i[nrecord] = i;
-    record_j[nrecord] = j;
-    record_force[nrecord] = film;
-    double *out = &record_shear[3 * nrecord];
-    out[0] = shear.x, out[1] = shear.y, out[2] = shear.z;
-    nrecord += (film != 0.0) | (shear.x != 0.0) | (shear.y != 0.0) | (shear.z != 0.0);
-  }
-  void finish_film_budget();
-  void finish_shear_film_budget();
+  FilmBudget budget;
+  void tally_film_correction(int i, int j, double fpair, double delx, double dely, double delz) override;
+  void tally_film_correction_xyz(int i, int j, double fx, double fy, double fz, double delx, double dely,
+                                 double delz) override;
 
   // Immovable atoms and rigid bodies (contact_mass.h): where a run has any, the inverse mass
   // a contact moves, per owned and ghost atom (0 immovable), rebuilt with the neighbor lists;
@@ -143,28 +115,23 @@ class PairLubricatedSpringDashpot : public Pair {
   bool inverse_mass_on = false;
   std::vector<double> inverse_mass;
   void update_inverse_mass();
-  // Stability of the network of sustained contacts (lubricated/contact_network.h), checked at the
-  // first step of a run and every network_check_interval steps, only where some type pair's
-  // contact load exceeds network_check_load: per type pair the normal load and the bounding one
-  // (with the tangential spring); per atom the network sums.
-  std::vector<double> network_load, network_bound;
-  bool network_check = false, network_warned = false;
-  bigint network_next = 0;    // step of the next check
-  std::vector<double> network_sums;
-  std::vector<int> network_i, network_j;
-  void set_network_loads(int itype, int jtype);
-  void check_contact_network(int ncandidate);
-  // The plugin's wall fixes, whose sustained contacts join the check (found at each set-up; a
-  // wall whose load exceeds network_check_load turns the check on too), and this check's wall
-  // contacts: owned atom, normal, wall fix.
-  std::vector<class FixWallLubricationBase *> network_walls;
-  bool network_walls_check = false;
-  struct WallContact {
-    int i, wall;
-    double n[3];
+  // Stability of the network of sustained contacts (contact_network/contact_network_check.h).
+  ContactNetworkCheck network;
+
+  // init_style's steps (pair_lubricated_springdashpot_init.cpp).
+  void check_atom_style();
+  struct TypePairNeeds {
+    bool friction = false, shear_film = false;
+    std::set<std::string> advice;    // the set-up checks' warnings, once each
   };
-  std::vector<WallContact> network_wall_contacts;
-  void find_network_walls();
+  TypePairNeeds settle_coefficients();
+  void keep_contact_history(bool any_friction);
+  void warn_hybrid_instances();
+  void find_integrators();
+  void choose_loops();
+  void init_film_budget(bool any_shear_film);
+  void check_grid_spacing();
+  void find_largest_radii();
 
   void allocate();
   int ntypes_alloc = 0;
@@ -178,10 +145,6 @@ class PairLubricatedSpringDashpot : public Pair {
   // The wet list trimmed in place after each build to the pairs a film can reach before the
   // next (pair_lubricated_springdashpot_list.cpp); `trim no` keeps it as LAMMPS built it.
   bool trim_enabled = true;
-  // The centre distance within which a pair of atoms i, j can act before the next build: the
-  // radii, the types' largest film reach (max_reach) and the skin (each atom moves at most half
-  // of it until then). The trim's bound and the film budget's ceiling.
-  double reach_until_next_build(int i, int j, double skin) const;
   std::pair<bigint, bigint> trimmed_build{-1, -1};    // the build trimmed last (lastcall, ncalls)
   bool list_can_be_trimmed() const;
   void trim_list_to_reach();
@@ -208,9 +171,25 @@ class PairLubricatedSpringDashpot : public Pair {
     bool budget;    // this step keeps the film budget
     bool steps;     // a step, not a set-up: time passes (contact histories advance)
   };
+  PairLoop pair_loop(double **v, bool wet) const;
+  void find_uniform_film_reach();
   template <bool WET, bool TANGENTIAL>
   __attribute__((always_inline)) inline void evaluate_pair(const PairLoop &loop, int i, int j, int jj);
+  __attribute__((always_inline)) inline void set_tangential_point(const PairLoop &loop, int i, int j, int jj,
+                                                                  const lubricated::ContactModel &model,
+                                                                  lubricated::ContactPoint &p,
+                                                                  lubricated::HistorySlot &slot);
+  template <bool WET, bool TANGENTIAL>
+  __attribute__((always_inline)) inline void contact(const PairLoop &loop, int i, int j, int jj,
+                                                     const lubricated::ContactModel &model, lubricated::ContactPoint &p,
+                                                     const double *del, double rinv);
+  template <bool TANGENTIAL>
+  __attribute__((always_inline)) inline void apply_pair_force(const PairLoop &loop, int i, int j, const double *del,
+                                                              double fpair, const lubricated::Vec3 &tangential,
+                                                              double energy);
   __attribute__((always_inline)) inline void forget_history(int i, int jj);
+  // Pass 2's vectorised loops over one piece (vector_forces.h).
+  template <bool TANGENTIAL, class Evaluate> class VectorForces;
   template <bool TANGENTIAL, class Evaluate>
   void vector_forces(int ncandidate, int nfilm, double **v, double **omega, Evaluate &evaluate);
 };

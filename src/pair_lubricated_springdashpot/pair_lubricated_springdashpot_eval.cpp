@@ -10,28 +10,17 @@
 #include "fix_contact_history/fix_contact_history.h"
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_step_velocity/fix_step_velocity.h"
-#include "lubricated/contact_network.h"
-#include "lubricated/contact_network_message.h"
-#include "lubricated/contact_network_ranks.h"
 #include "lubricated/film_budget.h"
 
 #include "atom.h"
-#include "comm.h"
-#include "error.h"
-#include "fix.h"
 #include "force.h"
-#include "memory.h"
-#include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "update.h"
-#include "utils.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
-#include <string>
 
 using namespace LAMMPS_NS;
 namespace lub = lubricated;
@@ -52,8 +41,8 @@ void PairLubricatedSpringDashpot::update_step_reach(double **v)
   const double dt = update->dt;
   const double *radius = atom->radius;
   const int nall = atom->nlocal + atom->nghost;
-  if (static_cast<int>(step_reach.size()) < nall) step_reach.resize(atom->nmax);
-  double *out = step_reach.data();
+  if (static_cast<int>(loop_lists.step_reach.size()) < nall) loop_lists.step_reach.resize(atom->nmax);
+  double *out = loop_lists.step_reach.data();
   if (nall == 0) return;    // no atoms: maybe no velocity array
   // The velocities as the block they are (3 per atom, or the midpoint integrator's rows): a loop
   // the compiler vectorises.
@@ -78,8 +67,8 @@ void PairLubricatedSpringDashpot::update_step_reach(double **v)
 template <bool WET, bool TANGENTIAL, bool SPLIT, bool UNIFORM_REACH>
 int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
 {
-  const double *x = atom->x[0];               // positions, 3 per atom (one block)
-  const double *grown = step_reach.data();    // grown radii (update_step_reach)
+  const double *x = atom->x[0];                          // positions, 3 per atom (one block)
+  const double *grown = loop_lists.step_reach.data();    // grown radii (update_step_reach)
   const int *type = atom->type;
   const int inum = list->inum;
   const int *ilist = list->ilist;
@@ -103,13 +92,15 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
     const int *jlist = firstneigh[i];
     const char *touched = TANGENTIAL && history ? history->touched(i) : nullptr;
     // candidate_jj only grows with friction: a run that adds friction finds it shorter.
-    if (ncandidate + jnum > static_cast<int>(candidate_i.size()) ||
-        (TANGENTIAL && candidate_jj.size() < candidate_i.size()))
-      grow_pair_lists(candidate_i, candidate_j, TANGENTIAL ? &candidate_jj : nullptr, ncandidate + jnum);
-    if (WET && SPLIT && nfilm_here + jnum > static_cast<int>(film_i.size()))
-      grow_pair_lists(film_i, film_j, nullptr, nfilm_here + jnum);
-    int *out_i = candidate_i.data(), *out_j = candidate_j.data(), *out_jj = candidate_jj.data();
-    int *film_out_i = film_i.data(), *film_out_j = film_j.data();
+    if (ncandidate + jnum > static_cast<int>(loop_lists.candidate_i.size()) ||
+        (TANGENTIAL && loop_lists.candidate_jj.size() < loop_lists.candidate_i.size()))
+      grow_pair_lists(loop_lists.candidate_i, loop_lists.candidate_j, TANGENTIAL ? &loop_lists.candidate_jj : nullptr,
+                      ncandidate + jnum);
+    if (WET && SPLIT && nfilm_here + jnum > static_cast<int>(loop_lists.film_i.size()))
+      grow_pair_lists(loop_lists.film_i, loop_lists.film_j, nullptr, nfilm_here + jnum);
+    int *out_i = loop_lists.candidate_i.data(), *out_j = loop_lists.candidate_j.data(),
+        *out_jj = loop_lists.candidate_jj.data();
+    int *film_out_i = loop_lists.film_i.data(), *film_out_j = loop_lists.film_j.data();
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double *xj = x + 3 * static_cast<std::size_t>(j);
@@ -150,22 +141,105 @@ inline void PairLubricatedSpringDashpot::forget_history(int i, int jj)
   }
 }
 
+// What the whole contact reads beyond the normal direction (with friction, rolling or a shear
+// film): the slip from the engine's velocities (under the midpoint integrator V~, not the step
+// velocity of the normal contact), the spheres, and the history's slot.
+inline void PairLubricatedSpringDashpot::set_tangential_point(const PairLoop &loop, int i, int j, int jj,
+                                                              const lub::ContactModel &model, lub::ContactPoint &p,
+                                                              lub::HistorySlot &slot)
+{
+  double **v = loop.v;
+  const double *inverse = loop.inverse;
+  const double radi = loop.radius[i], radj = loop.radius[j];
+  p.dv = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+  p.omega_i = {loop.omega[i][0], loop.omega[i][1], loop.omega[i][2]};
+  p.omega_j = {loop.omega[j][0], loop.omega[j][1], loop.omega[j][2]};
+  p.radius_i = radi, p.radius_j = radj;
+  p.reduced_radius = radi * radj / (radi + radj);
+  if (p.gap < 0.0 && model.tangential.rolling_active()) {
+    // The spheres' own inertia (also in a rigid body); an immovable atom does not turn.
+    p.mass_i = inverse && inverse[i] == 0.0 ? 0.0 : loop.rmass[i];
+    p.mass_j = inverse && inverse[j] == 0.0 ? 0.0 : loop.rmass[j];
+  }
+  if (history) slot = {history->values(i) + 3 * jj, history->touched(i)[jj] != 0, loop.steps};
+}
+
+// The pair's whole force (fx, fy, fz) on i, the opposite on j, and its tallies.
+template <bool TANGENTIAL>
+inline void PairLubricatedSpringDashpot::apply_pair_force(const PairLoop &loop, int i, int j, const double *del,
+                                                          double fpair, const lub::Vec3 &tangential, double energy)
+{
+  double **f = loop.f;
+  const int nlocal = loop.nlocal, newton_pair = loop.newton_pair;
+  const double fx = del[0] * fpair + tangential.x, fy = del[1] * fpair + tangential.y,
+               fz = del[2] * fpair + tangential.z;
+  f[i][0] += fx;
+  f[i][1] += fy;
+  f[i][2] += fz;
+  if (newton_pair || j < nlocal) {
+    f[j][0] -= fx;
+    f[j][1] -= fy;
+    f[j][2] -= fz;
+  }
+  if (evflag) {
+    if (TANGENTIAL)
+      ev_tally_xyz(i, j, nlocal, newton_pair, energy, 0.0, fx, fy, fz, del[0], del[1], del[2]);
+    else
+      ev_tally(i, j, nlocal, newton_pair, energy, 0.0, fpair, del[0], del[1], del[2]);
+  }
+}
+
+// The whole contact of a pair at its contact point p (normal direction del * rinv), the film
+// budget's records, the torques, forces and tallies.
+template <bool WET, bool TANGENTIAL>
+inline void PairLubricatedSpringDashpot::contact(const PairLoop &loop, int i, int j, int jj,
+                                                 const lub::ContactModel &model, lub::ContactPoint &p,
+                                                 const double *del, double rinv)
+{
+  const int nlocal = loop.nlocal, newton_pair = loop.newton_pair;
+  const double kick_time = loop.kick_time;
+  const bool records = WET && loop.budget;
+  // Without tangential parts the normal force alone (a whole ContactForces would cost a zero
+  // fill per pair).
+  lub::NormalForce fn;
+  double share = 0.0;
+  lub::Vec3 tangential;
+  if constexpr (TANGENTIAL) {
+    lub::HistorySlot slot;
+    p.n = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
+    set_tangential_point(loop, i, j, jj, model, p, slot);
+    const lub::ContactForces c = lub::contact_forces<true>(model, p, slot, loop.when);
+    fn = c.normal;
+    if (history) history->touched(i)[jj] = slot.touched;
+    if (records) share = lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time);
+    if (records && budget.records_shear())
+      budget.record_films(i, j, fn.lubrication, c.shear, lub::contact_film_share(share, c.shear_share(kick_time)),
+                          nlocal, newton_pair);
+    tangential = c.tangential;
+    loop.torque[i][0] += c.torque_i.x, loop.torque[i][1] += c.torque_i.y, loop.torque[i][2] += c.torque_i.z;
+    if (newton_pair || j < nlocal)
+      loop.torque[j][0] += c.torque_j.x, loop.torque[j][1] += c.torque_j.y, loop.torque[j][2] += c.torque_j.z;
+  } else {
+    fn = lub::normal_force(model.normal, p.gap, p.film, p.reduced_mass, p.u_n, loop.when);
+    if (records) share = lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time);
+  }
+  if (records && !(TANGENTIAL && budget.records_shear()))
+    budget.record_film(i, j, fn.lubrication, share, nlocal, newton_pair);
+  apply_pair_force<TANGENTIAL>(loop, i, j, del, fn.total() * rinv, tangential, fn.energy);
+}
+
 // Pass 2: one pair kept by pass 1 (jj, its place in i's neighbor list, for the history only):
 // the whole contact (lubricated/contact.h), the film budget's records, forces, torques, tallies.
 template <bool WET, bool TANGENTIAL>
 inline void PairLubricatedSpringDashpot::evaluate_pair(const PairLoop &loop, const int i, const int j, const int jj)
 {
-  double **x = loop.x, **v = loop.v, **f = loop.f;
+  double **x = loop.x, **v = loop.v;
   const double *radius = loop.radius, *rmass = loop.rmass, *inverse = loop.inverse;
-  const int nlocal = loop.nlocal, newton_pair = loop.newton_pair;
-  const double dt = loop.dt, kick_time = loop.kick_time;
-  const bool budget = WET && loop.budget;
-  const double delx = x[i][0] - x[j][0];
-  const double dely = x[i][1] - x[j][1];
-  const double delz = x[i][2] - x[j][2];
+  const double dt = loop.dt;
+  const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+  const double delx = del[0], dely = del[1], delz = del[2];
   const double rsq = delx * delx + dely * dely + delz * delz;
-  const double radi = radius[i];
-  const double radsum = radi + radius[j];
+  const double radsum = radius[i] + radius[j];
   const lub::ContactModel &model = loop.models[loop.type[i] * loop.stride + loop.type[j]];
   auto forget = [&]() {
     if (TANGENTIAL && history) forget_history(i, jj);
@@ -173,14 +247,12 @@ inline void PairLubricatedSpringDashpot::evaluate_pair(const PairLoop &loop, con
 
   const double *vi = v[i], *vj = v[j];
   if (midpoint && model.normal.exact) vi = midpoint->step_velocity(i), vj = midpoint->step_velocity(j);
-  const double dvx = vi[0] - vj[0];
-  const double dvy = vi[1] - vj[1];
-  const double dvz = vi[2] - vj[2];
+  const double dvx = vi[0] - vj[0], dvy = vi[1] - vj[1], dvz = vi[2] - vj[2];
 
   lub::ContactPoint p;
   double reach = 0.0;
   if (WET && model.normal.lubrication.active()) {
-    p.film = lub::film_radius_pair(radi, radius[j]);
+    p.film = lub::film_radius_pair(radius[i], radius[j]);
     reach = model.normal.reach(p.film.value);
   }
   const double outer = radsum + reach;
@@ -206,62 +278,37 @@ inline void PairLubricatedSpringDashpot::evaluate_pair(const PairLoop &loop, con
     forget();
     return;
   }
-  lub::HistorySlot slot;
-  if (TANGENTIAL) {
-    // The slip uses the engine's velocities (under the midpoint integrator: V~, not the
-    // step velocity of the normal contact).
-    const double radj = radius[j];
-    p.n = {delx * rinv, dely * rinv, delz * rinv};
-    p.dv = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
-    p.omega_i = {loop.omega[i][0], loop.omega[i][1], loop.omega[i][2]};
-    p.omega_j = {loop.omega[j][0], loop.omega[j][1], loop.omega[j][2]};
-    p.radius_i = radi, p.radius_j = radj;
-    p.reduced_radius = radi * radj / (radi + radj);
-    if (p.gap < 0.0 && model.tangential.rolling_active()) {
-      // The spheres' own inertia (also in a rigid body); an immovable atom does not turn.
-      p.mass_i = inverse && inverse[i] == 0.0 ? 0.0 : rmass[i];
-      p.mass_j = inverse && inverse[j] == 0.0 ? 0.0 : rmass[j];
-    }
-    if (history) slot = {history->values(i) + 3 * jj, history->touched(i)[jj] != 0, loop.steps};
-  }
-  // Without tangential parts the normal force alone (a whole ContactForces would cost a zero
-  // fill per pair).
-  lub::NormalForce fn;
-  double share = 0.0;
-  lub::Vec3 tangential;
-  if constexpr (TANGENTIAL) {
-    const lub::ContactForces c = lub::contact_forces<true>(model, p, slot, loop.when);
-    fn = c.normal;
-    if (history) history->touched(i)[jj] = slot.touched;
-    if (budget) share = lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time);
-    if (budget && shear_records)
-      record_films(i, j, fn.lubrication, c.shear, lub::contact_film_share(share, c.shear_share(kick_time)), nlocal,
-                   newton_pair);
-    tangential = c.tangential;
-    loop.torque[i][0] += c.torque_i.x, loop.torque[i][1] += c.torque_i.y, loop.torque[i][2] += c.torque_i.z;
-    if (newton_pair || j < nlocal)
-      loop.torque[j][0] += c.torque_j.x, loop.torque[j][1] += c.torque_j.y, loop.torque[j][2] += c.torque_j.z;
-  } else {
-    fn = lub::normal_force(model.normal, p.gap, p.film, p.reduced_mass, p.u_n, loop.when);
-    if (budget) share = lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time);
-  }
-  if (budget && !(TANGENTIAL && shear_records)) record_film(i, j, fn.lubrication, share, nlocal, newton_pair);
-  const double fpair = fn.total() * rinv;
-  const double fx = delx * fpair + tangential.x, fy = dely * fpair + tangential.y, fz = delz * fpair + tangential.z;
-  f[i][0] += fx;
-  f[i][1] += fy;
-  f[i][2] += fz;
-  if (newton_pair || j < nlocal) {
-    f[j][0] -= fx;
-    f[j][1] -= fy;
-    f[j][2] -= fz;
-  }
-  if (evflag) {
-    if (TANGENTIAL)
-      ev_tally_xyz(i, j, nlocal, newton_pair, fn.energy, 0.0, fx, fy, fz, delx, dely, delz);
-    else
-      ev_tally(i, j, nlocal, newton_pair, fn.energy, 0.0, fpair, delx, dely, delz);
-  }
+  contact<WET, TANGENTIAL>(loop, i, j, jj, model, p, del, rinv);
+}
+
+// One film reach for every type pair: pass 1 then looks up no types.
+void PairLubricatedSpringDashpot::find_uniform_film_reach()
+{
+  const int stride = ntypes_alloc + 1;
+  film_reach_uniform = true;
+  for (int a = 1; a < stride; a++)
+    for (int b = 1; b < stride; b++)
+      film_reach_uniform = film_reach_uniform && max_reach[a * stride + b] == max_reach[stride + 1];
+}
+
+// What every pair of this evaluation reads. Full-step velocities at a run start, used by each
+// integrator its own way (contact_step.h).
+PairLubricatedSpringDashpot::PairLoop PairLubricatedSpringDashpot::pair_loop(double **v, bool wet) const
+{
+  PairLoop loop;
+  loop.x = atom->x, loop.v = v, loop.f = atom->f, loop.torque = atom->torque;
+  loop.omega = continued ? step_velocity->spin() : atom->omega;
+  loop.radius = atom->radius, loop.rmass = atom->rmass, loop.inverse = inverse_mass_on ? inverse_mass.data() : nullptr;
+  loop.type = atom->type;
+  loop.models = models.data(), loop.stride = ntypes_alloc + 1;
+  loop.nlocal = atom->nlocal, loop.newton_pair = force->newton_pair;
+  loop.dt = update->dt;
+  loop.when = continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
+  loop.kick_time =
+      lub::film_kick_time(loop.dt, loop.when != lub::Evaluation::step, loop.when == lub::Evaluation::midpoint_start);
+  loop.budget = wet && budget.active();
+  loop.steps = !update->setupflag;
+  return loop;
 }
 
 template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpot::eval()
@@ -272,31 +319,13 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   update_step_reach(v);
   // The contact-network check reads the step's candidates at once: on its steps pass 1 selects
   // the whole list in one piece.
-  const bool network_due =
-      (network_check || network_walls_check) && !update->setupflag && update->ntimestep >= network_next;
-  if (network_due) network_next = update->ntimestep + lub::network_check_interval;
+  const bool network_due = network.due();
   const int limit = network_due ? std::numeric_limits<int>::max() : pairs_per_piece;
-  // One film reach for every type pair: pass 1 then looks up no types.
-  const int stride = ntypes_alloc + 1;
-  film_reach_uniform = true;
-  for (int a = 1; WET && a < stride; a++)
-    for (int b = 1; b < stride; b++)
-      film_reach_uniform = film_reach_uniform && max_reach[a * stride + b] == max_reach[stride + 1];
-
-  // Full-step velocities at a run start, used by each integrator its own way (contact_step.h).
-  PairLoop loop;
-  loop.x = atom->x, loop.v = v, loop.f = atom->f, loop.torque = atom->torque;
-  loop.omega = continued ? step_velocity->spin() : atom->omega;
-  loop.radius = atom->radius, loop.rmass = atom->rmass, loop.inverse = inverse_mass_on ? inverse_mass.data() : nullptr;
-  loop.type = atom->type;
-  loop.models = models.data(), loop.stride = stride;
-  loop.nlocal = atom->nlocal, loop.newton_pair = force->newton_pair;
-  loop.dt = update->dt;
-  loop.when = continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
-  loop.kick_time =
-      lub::film_kick_time(loop.dt, loop.when != lub::Evaluation::step, loop.when == lub::Evaluation::midpoint_start);
-  loop.budget = WET && film_budget_now;
-  loop.steps = !update->setupflag;
+  if (WET)
+    find_uniform_film_reach();
+  else
+    film_reach_uniform = true;
+  const PairLoop loop = pair_loop(v, WET);
   auto evaluate = [ this, loop ](int i, int j, int jj) __attribute__((always_inline))
   {
     evaluate_pair<WET, TANGENTIAL>(loop, i, j, jj);
@@ -310,8 +339,10 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     selected_pairs += ncandidate + (SPLIT ? nfilm : 0);
     film_only_pairs += nfilm;
     if (!SPLIT) nfilm = 0;    // counted only: no film-only list
-    if (network_due) check_contact_network(ncandidate);
-    if (loop.budget) reserve_records(ncandidate + nfilm);
+    if (network_due)
+      network.check({loop_lists.candidate_i.data(), loop_lists.candidate_j.data(), ncandidate,
+                     inverse_mass_on ? inverse_mass.data() : nullptr, midpoint, coeffs.data()});
+    if (loop.budget) budget.reserve_records(ncandidate + nfilm);
     if constexpr (SPLIT && !TANGENTIAL) {
       vector_forces<false>(ncandidate, nfilm, v, loop.omega, evaluate);
       continue;
@@ -326,7 +357,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
       vector_forces<true>(0, nfilm, v, loop.omega, evaluate);
     }
     for (int c = 0; c < ncandidate; c++)
-      evaluate(candidate_i[c], candidate_j[c], TANGENTIAL ? candidate_jj[c] : 0);
+      evaluate(loop_lists.candidate_i[c], loop_lists.candidate_j[c], TANGENTIAL ? loop_lists.candidate_jj[c] : 0);
   } while (next < list->inum);
 }
 

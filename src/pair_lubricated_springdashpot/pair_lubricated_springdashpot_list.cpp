@@ -25,15 +25,9 @@ static constexpr const char *STYLE = "Pair style lubricated/springdashpot";
 // so a pair can close its distance by at most the skin: only entries within
 // reach_until_next_build (r_i + r_j + the types' largest film reach, as pass 1 uses, + skin) can
 // act before the next build, and the others are dropped in place, as LAMMPS's radius-based lists
-// never hold them. The same bound as the film budget's (films_can_exceed_budget).
+// never hold them. The same bound as the film budget's (film_budget/film_budget.h).
 // Not where another list shares this one's arrays (a copy: a compute or fix asking for the same
 // list) or this one is a copy or trimmed from another (its arrays may be the parent's).
-double PairLubricatedSpringDashpot::reach_until_next_build(int i, int j, double skin) const
-{
-  const double *radius = atom->radius;
-  return radius[i] + radius[j] + max_reach[index(atom->type[i], atom->type[j])] + skin;
-}
-
 bool PairLubricatedSpringDashpot::list_can_be_trimmed() const
 {
   if (!list || list->listcopy) return false;
@@ -47,7 +41,8 @@ void PairLubricatedSpringDashpot::trim_list_to_reach()
   trimmed_build = {neighbor->lastcall, neighbor->ncalls};
   follow_radii();
   if (!trim_enabled || !any_wet || !list_can_be_trimmed()) return;
-  const double *x = atom->x[0];
+  const double *x = atom->x[0], *radius = atom->radius;
+  const int *type = atom->type;
   const double skin = neighbor->skin;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
@@ -61,7 +56,7 @@ void PairLubricatedSpringDashpot::trim_list_to_reach()
       const int entry = jlist[jj];
       const int j = entry & NEIGHMASK;
       const double delx = xi - x[3 * j], dely = yi - x[3 * j + 1], delz = zi - x[3 * j + 2];
-      const double outer = reach_until_next_build(i, j, skin);
+      const double outer = reach_until_next_build(radius, type, max_reach.data(), ntypes_alloc + 1, i, j, skin);
       jlist[kept] = entry;
       kept += delx * delx + dely * dely + delz * delz < outer * outer;
     }

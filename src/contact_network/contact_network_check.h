@@ -1,0 +1,93 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   The stability check of the network of sustained contacts for pair_style
+   lubricated/springdashpot (the bounds: lubricated/contact_network.h): at the first step of a
+   run and every network_check_interval steps, only where some type pair's (or wall's) contact
+   load exceeds network_check_load. Per atom the network sums over its contacts in overlap now
+   and a step ago (pairs and walls, summed over ranks), then each contact's bounds; the worst
+   over all ranks decides between nothing, a WARNING (once a run) and an ERROR.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_LUBRICATED_CONTACT_NETWORK_CHECK_H
+#define LMP_LUBRICATED_CONTACT_NETWORK_CHECK_H
+
+#include "pointers.h"
+
+#include "contact_network/contact_network_participant.h"
+#include "lubricated/contact.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class ContactNetworkCheck : protected Pointers {
+ public:
+  // style: the pair style's name for the messages.
+  ContactNetworkCheck(LAMMPS *lmp, class AtomVectorComm &exchange, const char *style) :
+      Pointers(lmp), exchange(exchange), style(style)
+  {
+  }
+
+  // The per type pair loads for ntypes types (the pair style's allocate).
+  void allocate(int ntypes);
+  // A run's start (init_style): the checks begin at its first step; set_loads turns them on.
+  void start_run();
+  // The loads of a sustained contact of types i, j (contact_network.h), from its model and the
+  // time step (init_one and each new time step).
+  void set_loads(int i, int j, const lubricated::ContactModel &model);
+  // At each set-up: the participants (the wall fixes), whose sustained contacts join the check
+  // and whose loads may turn it on.
+  void find_participants();
+  // Whether this step checks (the pair loop then selects its candidates in one piece); moves
+  // the next check on.
+  bool due();
+
+  // What the check reads of the pair style: the candidate pairs of the step (in overlap or
+  // not), the inverse contact masses where some atom is immovable (else nullptr), the
+  // velocities over the last step under fix nve/sphere/midpoint (else nullptr: v), and the
+  // coefficients per type pair (for the message).
+  struct Pairs {
+    const int *i, *j;
+    int n;
+    const double *inverse_mass;
+    class FixNVESphereMidpoint *midpoint;
+    const lubricated::Coefficients *coeffs;
+  };
+  void check(const Pairs &pairs);
+
+  double memory_usage() const;
+
+ private:
+  class AtomVectorComm &exchange;
+  const char *style;
+  int stride = 1;                     // type pair (i, j) at i * stride + j
+  std::vector<double> load, bound;    // per type pair: the normal load and the bounding one
+  bool on = false, warned = false;
+  bigint next = 0;                          // step of the next check
+  std::vector<double> sums;                 // per atom (lubricated::network_values each)
+  std::vector<int> network_i, network_j;    // this check's sustained pair contacts
+  struct Participant {
+    ContactNetworkParticipant *contacts;
+    class Fix *fix;
+  };
+  std::vector<Participant> participants;
+  bool participants_on = false;
+  // This check's wall contacts: owned atom, normal, participant.
+  struct WallContact {
+    int i, wall;
+    double n[3];
+  };
+  std::vector<WallContact> wall_contacts;
+  std::vector<double> wall_load, wall_bound;
+
+  double mass(const Pairs &pairs, int i) const;
+  double pair_mass(const Pairs &pairs, int i, int j) const;
+  void sum_pair_contacts(const Pairs &pairs);
+  void sum_wall_contacts(const Pairs &pairs);
+  void score_and_report(const Pairs &pairs);
+  void describe(int k, int *types, long long *tags, double *contacts) const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,129 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   The many-body film budget of pair_style lubricated/springdashpot (`limit atom`, the
+   default): each film's share of its atoms' budget summed per owned and ghost atom, and the
+   films of atoms over budget scaled down after the pair loops (the physics:
+   lubricated/film_budget.h). The pair loops apply every film in full and record it here
+   (record_film, record_films); the walls' films (FilmBudgetParticipant) join the loads and
+   are scaled by the walls themselves. The sums over ranks go through AtomVectorComm, which
+   can send any per-atom vector forward and back as often as a step needs.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_LUBRICATED_FILM_BUDGET_LAMMPS_H
+#define LMP_LUBRICATED_FILM_BUDGET_LAMMPS_H
+
+#include "pointers.h"
+
+#include "film_budget/atom_vector_comm.h"
+#include "film_budget/film_budget_participant.h"
+#include "lubricated/contact.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+// The centre distance within which atoms i and j can act before the next neighbor list build:
+// their radii, the types' largest film reach (max_reach, per type pair) and the skin (each atom
+// moves at most half of it until then). The film budget's bound and the list trim's.
+inline double reach_until_next_build(const double *radius, const int *type, const double *max_reach, int stride, int i,
+                                     int j, double skin)
+{
+  return radius[i] + radius[j] + max_reach[type[i] * stride + type[j]] + skin;
+}
+
+class FilmBudget : protected Pointers {
+ public:
+  FilmBudget(LAMMPS *lmp, AtomVectorComm &exchange) : Pointers(lmp), exchange(exchange) {}
+
+  // At init_style: the participants (every fix that is one), and whether the budget is kept:
+  // under `limit atom` where a pair or a participant has films. shear_films: some type pair
+  // has a shear film, which shares the budget.
+  void init(bool limit_per_atom, bool wet_pairs, bool shear_films);
+  bool kept() const { return enabled; }
+  bool wet_participants() const { return any_wet_participant; }
+  // This step's: whether the films can exceed any atom's budget (else nothing is recorded or
+  // scaled), and an owned atom's film scale once finish() computed it.
+  bool active() const { return now; }
+  double scale(int i) const { return now ? scale_of_atom[i] : 1.0; }
+  bool records_shear() const { return shear_records; }
+
+  // What the bounds read per type pair (index type_i * stride + type_j).
+  struct TypeTables {
+    const lubricated::ContactModel *models;
+    const double *max_reach;
+    int stride;
+  };
+  // Before the pair loops: whether this step keeps the budget (from the bounds of the pairs of
+  // the neighbor list, recomputed at each build, set-up or larger time step), and if so the
+  // loads started from the participants' films.
+  void begin_step(const class NeighList *list, const TypeTables &tables);
+  // Room for `more` records before a piece of the pair loops.
+  void reserve_records(int more);
+
+  // A pair's film (its size along n) and its share of the budget.
+  __attribute__((always_inline)) inline void record_film(int i, int j, double film, double share, int nlocal,
+                                                         int newton_pair)
+  {
+    load_of_atom[i] += share;
+    if (newton_pair || j < nlocal) load_of_atom[j] += share;
+    record_i[nrecord] = i;
+    record_j[nrecord] = j;
+    record_force[nrecord] = film;
+    nrecord += film != 0.0;
+  }
+  // With shear films (records_shear()): the shear film's force on i too, and the contact's
+  // share, the larger of the normal and shear films' (lubricated/film_budget.h); both films
+  // are scaled by the same s.
+  __attribute__((always_inline)) inline void record_films(int i, int j, double film, const lubricated::Vec3 &shear,
+                                                          double share, int nlocal, int newton_pair)
+  {
+    load_of_atom[i] += share;
+    if (newton_pair || j < nlocal) load_of_atom[j] += share;
+    record_i[nrecord] = i;
+    record_j[nrecord] = j;
+    record_force[nrecord] = film;
+    double *out = &record_shear[3 * nrecord];
+    out[0] = shear.x, out[1] = shear.y, out[2] = shear.z;
+    nrecord += (film != 0.0) | (shear.x != 0.0) | (shear.y != 0.0) | (shear.z != 0.0);
+  }
+
+  // What the correction pass tallies (the pair style's energy and virial).
+  class Tally {
+   public:
+    virtual void tally_film_correction(int i, int j, double fpair, double delx, double dely, double delz) = 0;
+    virtual void tally_film_correction_xyz(int i, int j, double fx, double fy, double fz, double delx, double dely,
+                                           double delz) = 0;
+
+   protected:
+    ~Tally() = default;
+  };
+  // After the pair loops (where active()): the loads summed on the owners, the scales sent to
+  // the ghosts, and the recorded films of atoms over budget scaled down. inverse_mass: the
+  // contact masses' inverses where some atom is immovable (its load limits nothing), else
+  // nullptr; tally: where the pair style tallies, else nullptr.
+  void finish(const double *inverse_mass, Tally *tally);
+
+  double memory_usage() const;
+
+ private:
+  AtomVectorComm &exchange;
+  bool limit_per_atom = true, enabled = false, shear_records = false, any_wet_participant = false;
+  std::vector<FilmBudgetParticipant *> participants;
+  // Per owned and ghost atom: the summed film share and its scale.
+  std::vector<double> load_of_atom, scale_of_atom;
+  // Per pair with a film: i, j, its film force along n, and with shear films the shear film's
+  // force (3 per record).
+  std::vector<int> record_i, record_j;
+  std::vector<double> record_force, record_shear;
+  int nrecord = 0;
+  bool now = false;
+  double bound_dt = 0.0;    // the time step the bounds were computed for
+  void grow_atoms();
+  bool films_can_exceed_budget(const class NeighList *list, const TypeTables &tables);
+  template <class BoundOf> bool sum_bounds_can_exceed(const class NeighList *list, BoundOf &&bound_of);
+  void scale_films(Tally *tally);
+  void scale_films_and_shear(Tally *tally);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
