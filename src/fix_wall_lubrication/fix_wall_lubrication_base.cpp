@@ -180,7 +180,7 @@ void FixWallLubricationBase::apply_films()
     const double *fs = shear ? shear + 6 * e : nullptr;
     const bool film = ff[0] != 0.0 || ff[1] != 0.0 || ff[2] != 0.0;
     if (!film && !(fs && (fs[0] != 0.0 || fs[1] != 0.0 || fs[2] != 0.0))) continue;
-    const double scale = by_pair ? pair_budget->scale(i) : own ? lub::film_scale_of_load(film_load[i]) : 1.0;
+    const double scale = by_pair ? pair_budget->scale(i) : own ? lub::film_scale_of_load(film_load[e]) : 1.0;
     lub::Vec3 force = lub::scaled({ff[0], ff[1], ff[2]}, scale), moment;
     if (fs) {
       force = lub::plus(force, lub::scaled({fs[0], fs[1], fs[2]}, scale));
