@@ -151,7 +151,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
   double **x = atom->x;
   // A set-up that continues the last run evaluates as its last step did, with its velocities
   // (fix_step_velocity.h); not with rigid bodies or immovable atoms.
-  const bool continued = step_velocity && step_velocity->continues() && !contact_mass.active();
+  const bool continued = step_velocity && step_velocity->continues() && !contact_mass.holds_or_rigid();
   double **v = continued ? step_velocity->velocity() : atom->v;
   double **omega = continued ? step_velocity->spin() : atom->omega;
   double **f = atom->f, **torque = atom->torque;
@@ -162,6 +162,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
   const lub::Evaluation when =
       continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
   const bool tangential_on = model.tangential.active();
+  const bool near_wall_mass = contact_mass.near_walls();
 
   clear_sums();
   films_pending = defer_films = defer_films && model.normal.lubrication.active();
@@ -186,6 +187,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
                           double mass, double load, double *h) __attribute__((noinline))
   {
     const double r = radius[i];
+    if (near_wall_mass) mass = contact_mass.along_normal(i, at.n.x, at.n.y, at.n.z, mass);    // contact_mass.h
     record_sustained(i, at.gap, u_n, at.n);
     lub::ContactPoint p;
     p.gap = at.gap, p.u_n = u_n, p.reduced_mass = mass, p.film = lub::FilmRadius(film_radius);
@@ -202,6 +204,8 @@ void FixWallLubrication::compute_walls(bool defer_films)
       p.omega_i = rel.omega;
       p.radius_i = r, p.reduced_radius = film_radius;    // R_f: the shear film's and rolling radius
       p.mass_i = rmass[i];                               // the sphere's own inertia, also in a rigid body
+      if (contact_mass.carries_added_mass())
+        p.tangential_mass = lub::tangential_mass_of_sides(1.0 / mass, rmass[i], 0.0, 0.0);
       if (h) slot = {h, h[3] != 0.0, !update->setupflag};
     }
     const lub::ContactForces c =

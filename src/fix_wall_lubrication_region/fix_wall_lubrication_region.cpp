@@ -189,7 +189,7 @@ void FixWallLubricationRegion::add_to_sums(const double *x, const lub::Vec3 &for
 
 void FixWallLubricationRegion::compute_walls(bool defer_films)
 {
-  const bool continued = step_velocity && step_velocity->continues() && !contact_mass.active();
+  const bool continued = step_velocity && step_velocity->continues() && !contact_mass.holds_or_rigid();
   double **v = continued ? step_velocity->velocity() : atom->v;
   double **omega = continued ? step_velocity->spin() : atom->omega;
   const double *rmass = atom->rmass;
@@ -278,8 +278,9 @@ void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, 
     double *h = history ? history_slot(i, c.iwall) : nullptr;
     record_sustained(i, gap, rel.u_n, n);
 
+    const double m_e = contact_mass.near_walls() ? contact_mass.along_normal(i, n.x, n.y, n.z, mass) : mass;
     lub::ContactPoint p;
-    p.gap = gap, p.u_n = rel.u_n, p.reduced_mass = mass, p.film = film, p.load = load;
+    p.gap = gap, p.u_n = rel.u_n, p.reduced_mass = m_e, p.film = film, p.load = load;
     lub::HistorySlot slot;
     if (tangential_on) {
       p.n = n;
@@ -287,6 +288,8 @@ void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, 
       p.omega_i = moving ? rel.omega : lub::Vec3{omega[i][0], omega[i][1], omega[i][2]};
       p.radius_i = r, p.reduced_radius = r;
       p.mass_i = atom->rmass[i];
+      if (contact_mass.carries_added_mass())
+        p.tangential_mass = lub::tangential_mass_of_sides(1.0 / m_e, atom->rmass[i], 0.0, 0.0);
       if (h) slot = {h + 1, h[4] != 0.0, !update->setupflag};
     }
     const lub::ContactForces cf =
@@ -301,7 +304,7 @@ void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, 
       entry = film_entry(i);
       double *ff = &film_force[3 * entry];
       ff[0] += fn.lubrication * n.x, ff[1] += fn.lubrication * n.y, ff[2] += fn.lubrication * n.z;
-      share = lub::film_share(fn.lubrication, mass, rel.u_n, kick_time);
+      share = lub::film_share(fn.lubrication, m_e, rel.u_n, kick_time);
       if (!shear_pending) film_load[entry] += share;
     }
     lub::Vec3 force = lub::scaled(n, normal), torque;
