@@ -179,6 +179,15 @@ double ContactMass::along_normal(int i, double nx, double ny, double nz, double 
   return 1.0 / (nx * nx / axis[0] + ny * ny / axis[1] + nz * nz / axis[2]);
 }
 
+double ContactMass::own_fraction(int i, double mass) const
+{
+  const int mask = atom->mask[i];
+  if (held(mask) || !(mass > 0.0)) return 1.0;
+  for (Fix *fix : rigid)
+    if (mask & fix->groupbit) return 1.0;
+  return added_mass(i) > 0.0 ? atom->rmass[i] / mass : 1.0;
+}
+
 void ContactMass::fill(double *inverse)
 {
   const int *mask = atom->mask;

@@ -52,6 +52,11 @@ class ContactMass : protected Pointers {
   bool near_walls() const { return any_near_walls; }
   double along_normal(int i, double nx, double ny, double nz, double mass) const;
 
+  // The part of a force on owned atom i that fix fluid/drag leaves it, m / m_e with m_e the
+  // contact mass it carries (along_normal): a steady load such as gravity accelerates it by
+  // that fraction (1 for an atom without added mass, immovable or in a rigid body).
+  double own_fraction(int i, double mass) const;
+
   // Notes the arguments of every fix setforce created from now on in this LAMMPS instance
   // (a Fix keeps no copy of them, and only `setforce 0 0 0` without region holds): wraps the
   // built-in factory. Called at plugin load and, since `clear` restores the factories, by the

@@ -162,7 +162,7 @@ void FixWallLubrication::compute_walls(bool defer_films)
   const lub::Evaluation when =
       continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
   const bool tangential_on = model.tangential.active();
-  const bool near_wall_mass = contact_mass.near_walls();
+  const bool carried_mass = contact_mass.carries_added_mass();
 
   clear_sums();
   films_pending = defer_films = defer_films && model.normal.lubrication.active();
@@ -187,7 +187,10 @@ void FixWallLubrication::compute_walls(bool defer_films)
                           double mass, double load, double *h) __attribute__((noinline))
   {
     const double r = radius[i];
-    if (near_wall_mass) mass = contact_mass.along_normal(i, at.n.x, at.n.y, at.n.z, mass);    // contact_mass.h
+    if (carried_mass) {    // the fluid's added mass (contact_mass.h): along n, and the load it slows
+      mass = contact_mass.along_normal(i, at.n.x, at.n.y, at.n.z, mass);
+      load *= contact_mass.own_fraction(i, mass);
+    }
     record_sustained(i, at.gap, u_n, at.n);
     lub::ContactPoint p;
     p.gap = at.gap, p.u_n = u_n, p.reduced_mass = mass, p.film = lub::FilmRadius(film_radius);

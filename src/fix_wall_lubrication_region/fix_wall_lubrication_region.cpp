@@ -278,9 +278,12 @@ void FixWallLubricationRegion::contacts_of_atom(int i, double mass, double **v, 
     double *h = history ? history_slot(i, c.iwall) : nullptr;
     record_sustained(i, gap, rel.u_n, n);
 
-    const double m_e = contact_mass.near_walls() ? contact_mass.along_normal(i, n.x, n.y, n.z, mass) : mass;
+    // The fluid's added mass (contact_mass.h): along n, and the load it slows.
+    const bool carried = contact_mass.carries_added_mass();
+    const double m_e = carried ? contact_mass.along_normal(i, n.x, n.y, n.z, mass) : mass;
     lub::ContactPoint p;
-    p.gap = gap, p.u_n = rel.u_n, p.reduced_mass = m_e, p.film = film, p.load = load;
+    p.gap = gap, p.u_n = rel.u_n, p.reduced_mass = m_e, p.film = film;
+    p.load = carried ? load * contact_mass.own_fraction(i, m_e) : load;
     lub::HistorySlot slot;
     if (tangential_on) {
       p.n = n;

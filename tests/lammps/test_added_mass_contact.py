@@ -239,3 +239,29 @@ def test_sticking_slip_as_without_added_mass(lmp, ratio):
     assert without["slip"] < 0.0
     assert carried["slip"] == pytest.approx(without["slip"], abs=1e-9)
     assert carried["e1"] == pytest.approx(E_DRY, abs=1e-9)
+
+
+def resting_scene(rho_f, g, region=False):
+    """A sphere put down on the floor under gravity g (fix gravity), 2000 steps (0.1 s): its
+    resting height."""
+    scene = wall_scene(RHO_P, rho_f, gap0=0.001, region=region)
+    scene = scene.replace(f"velocity all set 0 0 {-U}", "velocity all set 0 0 0")
+    scene = scene.replace("fix wall all", f"fix gravity all gravity {g} vector 0 0 -1\nfix wall all", 1)
+    scene = scene.replace(f"\nrun ", "\nrun 2000 # ", 1)
+    return scene + """print "RESULT z_rest $(z[1]:%.15g)"
+print "RESULT v_rest $(vz[1]:%.15g)"
+"""
+
+
+@pytest.mark.parametrize("ratio", [1.0, 0.001])
+@pytest.mark.parametrize("region", [False, True])
+def test_resting_load_is_the_carried_weight(lmp, ratio, region):
+    """The wall's steady load (gravity pressing the sphere on, the loaded event steps) is the
+    acceleration fix fluid/drag leaves, g m / (m + m_a): the sphere rests where a sphere without
+    added mass rests under that gravity (with g itself a bubble hovered 2e-5 R above the floor)."""
+    g = 9.81
+    carried = lmp(resting_scene(RHO_P / ratio, g, region))
+    plain = lmp(resting_scene(None, g / (1.0 + C_M / ratio), region))
+    assert carried["z_rest"] < R
+    assert carried["z_rest"] == pytest.approx(plain["z_rest"], abs=1e-9 * R)
+    assert abs(carried["v_rest"]) < 1e-9 * U
