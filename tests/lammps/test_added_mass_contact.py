@@ -3,8 +3,8 @@ of fix fluid/drag with added_mass carries m_a = C_m rho_f V into its contacts, w
 m + m_a (a wall) or ((m_i + m_a,i)^-1 + (m_j + m_a,j)^-1)^-1 (a pair), the masses fix fluid/drag
 divides the total force by.
 
-The fluid's drag is made negligible (Stokes law, mu_f = 1e-100) and there is no gravity, so the
-only fluid force is the added mass. Then the motion is that of spheres of mass m + m_a:
+The fluid's drag is made negligible (Stokes law, mu_f = 1e-100) and there is no gravity (but in
+the resting test), so the only fluid force is the added mass. Then the motion is that of spheres of mass m + m_a:
 
 - dry: the rebound is e_d and the contact lasts N_c steps, at every density ratio, as without
   added mass (the event steps are exact for an isolated contact: e_d to rounding);
@@ -12,7 +12,10 @@ only fluid force is the added mass. Then the motion is that of spheres of mass m
   same radius, so the same film and m_e = m + m_a): the film's cap, entry loss and budget all
   take m_e, so the two runs give the same e to rounding, and St is the one of m + m_a.
 
-Tolerances: 1e-9 on e (the exact event steps leave rounding only), contact steps N_c exactly.
+Also: the wet law with St of m + m_a, fix fluid/drag's near-wall added mass along a wall's
+normal, the tangential mass of a sticking impact, and a resting sphere's load (with gravity).
+Tolerances: 1e-9 on e (the exact event steps leave rounding only), contact steps N_c exactly;
+the tests that differ say why.
 """
 import math
 
