@@ -4,6 +4,9 @@
 
 #include "contact_mass.h"
 
+#include "fix_fluid_drag/fix_fluid_drag.h"
+#include "lubricated/drag.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
@@ -83,6 +86,8 @@ void ContactMass::init(const std::string &who, bool log)
   held_bits = integrated_bits = 0;
   any_integrator = false;
   rigid.clear();
+  carried.clear();
+  any_near_walls = false;
   std::vector<std::string> unknown;
   for (Fix *fix : modify->get_fix_list()) {
     const std::string style = fix->style;
@@ -99,9 +104,16 @@ void ContactMass::init(const std::string &who, bool log)
       integrated_bits |= fix->groupbit;
     }
     if (fix->rigid_flag) rigid.push_back(fix);
+    // The fluid's added mass moves with the sphere: fix fluid/drag divides the total force,
+    // the contact's included, by m + m_a.
+    if (const auto *drag = dynamic_cast<const FixFluidDrag *>(fix))
+      if (drag->added_mass_coefficient() > 0.0) {
+        carried.push_back({fix->groupbit, drag->added_mass_coefficient(), drag->fluid_density(), &drag->near_walls()});
+        any_near_walls = any_near_walls || !drag->near_walls().empty();
+      }
   }
 
-  double local[2] = {0.0, 0.0}, total[2];    // immovable, in rigid bodies
+  double local[3] = {0.0, 0.0, 0.0}, total[3];    // immovable, in rigid bodies, carrying added mass
   const int *mask = atom->mask;
   for (int i = 0; i < atom->nlocal; i++) {
     if (held(mask[i]))
@@ -112,9 +124,11 @@ void ContactMass::init(const std::string &who, bool log)
           local[1] += 1.0;
           break;
         }
+    if (!held(mask[i]) && added_mass(i) > 0.0) local[2] += 1.0;
   }
-  MPI_Allreduce(local, total, 2, MPI_DOUBLE, MPI_SUM, world);
-  any = total[0] + total[1] > 0.0;
+  MPI_Allreduce(local, total, 3, MPI_DOUBLE, MPI_SUM, world);
+  any_held_or_rigid = total[0] + total[1] > 0.0;
+  any = any_held_or_rigid || total[2] > 0.0;
   if (!log || comm->me != 0) return;
   for (const auto &id : unknown)
     error->warning(FLERR,
@@ -122,11 +136,56 @@ void ContactMass::init(const std::string &who, bool log)
                    "clear, before the plugin's first style): its arguments are unknown, its atoms are not "
                    "taken as immovable",
                    who, id);
-  if (any)
+  if (any_held_or_rigid)
     utils::logmesg(lmp,
                    "{}: {:.0f} immovable atoms (infinite mass in contacts), {:.0f} in rigid bodies "
                    "(the body's mass)\n",
                    who, total[0], total[1]);
+  if (total[2] > 0.0)
+    utils::logmesg(lmp, "{}: {:.0f} spheres carry the fluid's added mass into their contacts (m + m_a)\n", who,
+                   total[2]);
+}
+
+double ContactMass::added_mass(int i) const
+{
+  // As fix fluid/drag computes it: C_m (rho_f V).
+  double mass = 0.0;
+  for (const Carried &c : carried)
+    if (atom->mask[i] & c.groupbit) mass += c.coefficient * (c.density * lubricated::sphere_volume(atom->radius[i]));
+  return mass;
+}
+
+double ContactMass::along_normal(int i, double nx, double ny, double nz, double mass) const
+{
+  const int mask = atom->mask[i];
+  if (held(mask)) return mass;
+  for (Fix *fix : rigid)
+    if (mask & fix->groupbit) return mass;
+  // Per axis as fix fluid/drag solves: m + m_a near.mass[d].
+  const double m = atom->rmass[i], radius = atom->radius[i];
+  double axis[3] = {m, m, m};
+  bool carries = false;
+  for (const Carried &c : carried) {
+    if (!(mask & c.groupbit)) continue;
+    carries = true;
+    const double m_a = c.coefficient * (c.density * lubricated::sphere_volume(radius));
+    lubricated::WallAddedMass near;
+    if (!c.walls->empty())
+      near = lubricated::wall_added_mass(c.walls->data(), static_cast<int>(c.walls->size()), radius, atom->x[i]);
+    for (int d = 0; d < 3; d++)
+      axis[d] += m_a * near.mass[d];
+  }
+  if (!carries) return mass;
+  return 1.0 / (nx * nx / axis[0] + ny * ny / axis[1] + nz * nz / axis[2]);
+}
+
+double ContactMass::own_fraction(int i, double mass) const
+{
+  const int mask = atom->mask[i];
+  if (held(mask) || !(mass > 0.0)) return 1.0;
+  for (Fix *fix : rigid)
+    if (mask & fix->groupbit) return 1.0;
+  return added_mass(i) > 0.0 ? atom->rmass[i] / mass : 1.0;
 }
 
 void ContactMass::fill(double *inverse)
@@ -135,7 +194,7 @@ void ContactMass::fill(double *inverse)
   const double *rmass = atom->rmass;
   const int nlocal = atom->nlocal;
   for (int i = 0; i < nlocal; i++)
-    inverse[i] = held(mask[i]) ? 0.0 : 1.0 / rmass[i];
+    inverse[i] = held(mask[i]) ? 0.0 : 1.0 / (carried.empty() ? rmass[i] : rmass[i] + added_mass(i));
   for (Fix *fix : rigid) {
     int dim;
     const auto body = static_cast<const int *>(fix->extract("body", dim));

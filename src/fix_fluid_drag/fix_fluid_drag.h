@@ -36,6 +36,12 @@ class FixFluidDrag : public Fix {
   double compute_vector(int) override;
   double memory_usage() override;
 
+  // C_m and rho_f of the added mass m_a = C_m (rho_f V) (C_m 0 without added_mass). The contacts
+  // of the plugin's styles move m + m_a (contact_mass.h), as this fix's solve does.
+  double added_mass_coefficient() const { return added_mass; }
+  double fluid_density() const { return model.density; }
+  const std::vector<lubricated::AddedMassWall> &near_walls() const { return added_mass_walls; }    // keyword wall
+
   // the Basset history per atom (fix_fluid_drag_history.cpp)
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;

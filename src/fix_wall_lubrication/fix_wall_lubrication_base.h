@@ -102,6 +102,7 @@ class FixWallLubricationBase : public Fix, public FilmBudgetParticipant, public 
   // The contact of owned atom i (contact mass m_e = mass) on the atom and in the outputs: force,
   // torque, energy, the deferred films, the sustained contacts and the friction history.
   void apply_contact(int i, double mass, const WallContact &contact);
+  void apply_contact_of_mass(int i, double mass, const WallContact &contact);
   // A force and torque on atom i in the fix's vector sums (the energy is sums[0]).
   virtual void tally(int i, const lubricated::Vec3 &force, const lubricated::Vec3 &torque) = 0;
   // How a contact's tangential force joins its normal force: the plane and cylinder walls add

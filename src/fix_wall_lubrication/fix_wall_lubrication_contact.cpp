@@ -29,7 +29,7 @@ void FixWallLubricationBase::begin_evaluation(bool defer_films)
 {
   // A set-up that continues the last run evaluates as its last step did, with its velocities
   // (fix_step_velocity.h); not with rigid bodies or immovable atoms.
-  const bool continued = step_velocity && step_velocity->continues() && !contact_mass.active();
+  const bool continued = step_velocity && step_velocity->continues() && !contact_mass.holds_or_rigid();
   pass.v = continued ? step_velocity->velocity() : atom->v;
   pass.omega = continued ? step_velocity->spin() : atom->omega;
   pass.when = continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
@@ -53,6 +53,19 @@ void FixWallLubricationBase::begin_evaluation(bool defer_films)
 
 void FixWallLubricationBase::apply_contact(int i, double mass, const WallContact &contact)
 {
+  // The fluid's added mass (contact_mass.h) moves with the atom along n, and slows its load.
+  if (contact_mass.carries_added_mass()) {
+    WallContact carried = contact;
+    const double m_e = contact_mass.along_normal(i, contact.n.x, contact.n.y, contact.n.z, mass);
+    carried.load *= contact_mass.own_fraction(i, m_e);
+    apply_contact_of_mass(i, m_e, carried);
+    return;
+  }
+  apply_contact_of_mass(i, mass, contact);
+}
+
+void FixWallLubricationBase::apply_contact_of_mass(int i, double mass, const WallContact &contact)
+{
   record_sustained(i, contact.gap, contact.u_n, contact.n);
   const lub::ContactForces forces = contact_forces_of(i, mass, contact);
   const double normal = defer_contact_films(i, mass, contact, forces);
@@ -74,6 +87,9 @@ lub::ContactForces FixWallLubricationBase::contact_forces_of(int i, double mass,
     p.omega_i = contact.omega;
     p.radius_i = atom->radius[i], p.reduced_radius = contact.reduced_radius;
     p.mass_i = atom->rmass[i];    // the sphere's own inertia, also in a rigid body
+    // An added mass moves with the sphere, not with its turning (contact_mass.h).
+    if (contact_mass.carries_added_mass())
+      p.tangential_mass = lub::tangential_mass_of_sides(1.0 / mass, atom->rmass[i], 0.0, 0.0);
     if (h) slot = {h, h[3] != 0.0, !update->setupflag};
   }
   const lub::ContactForces forces =

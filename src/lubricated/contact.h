@@ -48,6 +48,9 @@ struct ContactPoint {
   Vec3 n, dv, omega_i, omega_j;
   double radius_i = 0.0, radius_j = 0.0, reduced_radius = 0.0;
   double mass_i = 0.0, mass_j = 0.0;
+  // m_t where it is not tangential_mass_ratio m_e (spheres carrying an added mass:
+  // tangential_mass_of_sides); 0: tangential_mass_ratio m_e.
+  double tangential_mass = 0.0;
 };
 
 // The contact's friction history (tangential.h), where the engine keeps it: the elongation
@@ -115,7 +118,7 @@ contact_forces(const ContactModel &m, const ContactPoint &p, HistorySlot &histor
   const Vec3 lever =
       wall ? scaled(p.omega_i, p.radius_i) : plus(scaled(p.omega_i, p.radius_i), scaled(p.omega_j, p.radius_j));
   const Vec3 s = tangential_part(minus(p.dv, cross(lever, p.n)), p.n);
-  const double m_t = tangential_mass_ratio * p.reduced_mass;
+  const double m_t = p.tangential_mass > 0.0 ? p.tangential_mass : tangential_mass_ratio * p.reduced_mass;
 
   Vec3 f;
   if (history.elongation) {

@@ -45,6 +45,19 @@ inline double sphere_inertia(double mass, double radius)
   return solid_sphere_inertia_ratio * mass * radius * radius;
 }
 
+// m_t where a sphere's translation carries more than its own mass (the fluid's added mass,
+// which a turning sphere does not carry): 1/m_t = sum over the sides that move of
+// 1/m_c + R^2/I = 1/m_c + 1/(0.4 m), m_c its contact mass (1/m_c: inverse_c, 0 for a side that
+// does not move: a wall, an immovable atom) and m its own mass. Without added mass (m_c = m)
+// this is tangential_mass_ratio m_e.
+inline double tangential_mass_of_sides(double inverse_i, double mass_i, double inverse_j, double mass_j)
+{
+  double inverse = 0.0;
+  if (inverse_i > 0.0) inverse += inverse_i + 1.0 / (solid_sphere_inertia_ratio * mass_i);
+  if (inverse_j > 0.0) inverse += inverse_j + 1.0 / (solid_sphere_inertia_ratio * mass_j);
+  return 1.0 / inverse;
+}
+
 struct Vec3 {
   double x = 0.0, y = 0.0, z = 0.0;
 };

@@ -192,7 +192,7 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
   trim_list_if_built();
   // A set-up that continues the last run evaluates as its last step did (fix_step_velocity.h);
   // not with rigid bodies or immovable atoms, whose velocities the reconstruction does not know.
-  continued = step_velocity && step_velocity->continues() && !inverse_mass_on;
+  continued = step_velocity && step_velocity->continues() && !contact_mass.holds_or_rigid();
   step_velocities_used = !update->setupflag || continued;
   if (update->setupflag) network.find_participants();
   if (inverse_mass_on && (neighbor->ago == 0 || update->setupflag)) update_inverse_mass();

@@ -156,6 +156,9 @@ inline void PairLubricatedSpringDashpot::set_tangential_point(const PairLoop &lo
   p.omega_j = {loop.omega[j][0], loop.omega[j][1], loop.omega[j][2]};
   p.radius_i = radi, p.radius_j = radj;
   p.reduced_radius = radi * radj / (radi + radj);
+  // An added mass moves with the spheres, not with their turning (contact_mass.h).
+  if (inverse && contact_mass.carries_added_mass())
+    p.tangential_mass = lub::tangential_mass_of_sides(inverse[i], loop.rmass[i], inverse[j], loop.rmass[j]);
   if (p.gap < 0.0 && model.tangential.rolling_active()) {
     // The spheres' own inertia (also in a rigid body); an immovable atom does not turn.
     p.mass_i = inverse && inverse[i] == 0.0 ? 0.0 : loop.rmass[i];
