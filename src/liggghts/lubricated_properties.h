@@ -11,8 +11,9 @@
 //   lubricatedLegendre       scalar           A: contact calibrated to e / e_d = exp(-A / St)
 //   lubricatedLimitPair      scalar           1: each film capped on its own (default 0)
 //
-// The values go through the kernel's Coefficients and validate(), the same ranges and
-// messages as pair_coeff in the LAMMPS plugin, with each keyword named by its property.
+// The coefficient properties are the property column of the kernel's keyword table
+// (lubricated/coefficient_keywords.h); the values go through its validate(), the same ranges
+// and messages as pair_coeff in the LAMMPS plugin, with each keyword named by its property.
 #pragma once
 
 #include "fix_property_global.h"
