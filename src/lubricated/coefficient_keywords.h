@@ -138,10 +138,9 @@ inline const CoefficientKeyword *find_keyword(const std::string &word)
 // "ncontact, tcontact, ... shearfilm or legendre"
 inline std::string keyword_list()
 {
-  std::string list;
-  for (int k = keyword::e_d + 1; k < keyword::count; k++)
-    list += std::string(k == keyword::e_d + 1 ? "" : k + 1 == keyword::count ? " or " : ", ") +
-            coefficient_keywords[k].name;
+  std::string list = coefficient_keywords[keyword::e_d + 1].name;
+  for (int k = keyword::e_d + 2; k < keyword::count; k++)
+    list += std::string(k + 1 == keyword::count ? " or " : ", ") + coefficient_keywords[k].name;
   return list;
 }
 
@@ -182,8 +181,8 @@ inline std::string validate(const Coefficients &c)
   if (!(c.eps_saturation >= smallest_saturation && c.eps_saturation < 1.0))
     return out_of_range(saturation, c.eps_saturation);
   if (!(c.eps_release < c.eps_saturation))
-    return "release = " + detail::number(c.eps_release) + " must be below saturation = " +
-           detail::number(c.eps_saturation) + " (eps_2 < eps_1 required)";
+    return "release = " + detail::number(c.eps_release) +
+           " must be below saturation = " + detail::number(c.eps_saturation) + " (eps_2 < eps_1 required)";
   if (!(c.friction >= 0.0)) return out_of_range(friction, c.friction);
   if (c.e_tangential != -1.0 && !(c.e_tangential >= 0.0 && c.e_tangential <= 1.0))
     return out_of_range(tangential, c.e_tangential);
