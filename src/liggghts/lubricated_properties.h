@@ -11,8 +11,9 @@
 //   lubricatedLegendre       scalar           A: contact calibrated to e / e_d = exp(-A / St)
 //   lubricatedLimitPair      scalar           1: each film capped on its own (default 0)
 //
-// The values go through the kernel's Coefficients and validate(), the same ranges and
-// messages as pair_coeff in the LAMMPS plugin, with each keyword named by its property.
+// The coefficient properties are the property column of the kernel's keyword table
+// (lubricated/coefficient_keywords.h); the values go through its validate(), the same ranges
+// and messages as pair_coeff in the LAMMPS plugin, with each keyword named by its property.
 #pragma once
 
 #include "fix_property_global.h"
@@ -35,17 +36,8 @@ namespace liggghts {
 // (the step-exact contact acts one step early); neigh_modify contact_distance_factor raises it.
 constexpr double approach_margin = 0.02;
 
-struct PropertyName {
-  const char *keyword;     // kernel keyword (coefficients.h)
-  const char *property;    // LIGGGHTS property name
-};
-
-constexpr PropertyName property_names[] = {
-    {"ncontact", "lubricatedContactSteps"}, {"tcontact", "lubricatedContactTime"},
-    {"viscosity", "lubricatedViscosity"},   {"activation", "lubricatedActivation"},
-    {"grid", "lubricatedGridSpacing"},      {"saturation", "lubricatedSaturation"},
-    {"release", "lubricatedRelease"},       {"legendre", "lubricatedLegendre"},
-    {"e_d", "coefficientRestitution"}};
+// Model options read as properties that are no coefficients (normal_model_lubricated.h).
+constexpr const char *limit_pair_property = "lubricatedLimitPair";
 
 // A kernel message with its keywords replaced by the property names users typed.
 inline std::string with_property_names(std::string message)
@@ -54,13 +46,14 @@ inline std::string with_property_names(std::string message)
   size_t pos = 0;
   while (pos < message.size()) {
     bool replaced = false;
-    for (const PropertyName &p : property_names) {
-      const std::string key = p.keyword;
+    for (const CoefficientKeyword &row : coefficient_keywords) {
+      if (!row.property) continue;
+      const std::string key = row.name;
       const bool start = pos == 0 || !std::isalnum(static_cast<unsigned char>(message[pos - 1]));
       const size_t end = pos + key.size();
       if (start && message.compare(pos, key.size(), key) == 0 &&
           (end == message.size() || !(std::isalnum(static_cast<unsigned char>(message[end])) || message[end] == '_'))) {
-        out += p.property;
+        out += row.property;
         pos = end;
         replaced = true;
         break;
@@ -71,16 +64,13 @@ inline std::string with_property_names(std::string message)
   return out;
 }
 
-// The properties the model reads as one global value; coefficientRestitution is per type pair.
-constexpr const char *scalar_properties[] = {"lubricatedContactSteps", "lubricatedContactTime", "lubricatedViscosity",
-                                             "lubricatedActivation",   "lubricatedGridSpacing", "lubricatedSaturation",
-                                             "lubricatedRelease",      "lubricatedLegendre",    "lubricatedLimitPair"};
-
+// The properties the model reads as one global value: every coefficient property but
+// coefficientRestitution (per type pair), and lubricatedLimitPair.
 inline bool is_scalar_property(const char *name)
 {
-  for (const char *p : scalar_properties)
-    if (std::strcmp(name, p) == 0) return true;
-  return false;
+  for (const CoefficientKeyword &row : coefficient_keywords)
+    if (row.id != keyword::e_d && row.property && std::strcmp(name, row.property) == 0) return true;
+  return std::strcmp(name, limit_pair_property) == 0;
 }
 
 // A scalar property given in another style: LIGGGHTS's lookup by style would skip it silently
@@ -121,19 +111,17 @@ inline std::vector<Coefficients> read_coefficients(LAMMPS_NS::Modify *modify, in
   message.clear();
   std::vector<Coefficients> table((ntypes + 1) * (ntypes + 1));
   auto *restitution = static_cast<LAMMPS_NS::FixPropertyGlobal *>(modify->find_fix_property(
-      "coefficientRestitution", "property/global", "peratomtypepair", ntypes, ntypes, caller));
-  Coefficients common;    // defaults unless the property exists (read_scalar leaves them)
+      coefficient_keywords[keyword::e_d].property, "property/global", "peratomtypepair", ntypes, ntypes, caller));
+  Coefficients common;    // defaults unless the property exists
   Given given;
-  given.ncontact = read_scalar(modify, "lubricatedContactSteps", caller, common.n_contact, message);
-  given.tcontact = read_scalar(modify, "lubricatedContactTime", caller, common.t_contact, message);
-  read_scalar(modify, "lubricatedViscosity", caller, common.viscosity, message);
-  given.activation = read_scalar(modify, "lubricatedActivation", caller, common.eps_activation, message);
-  given.grid = read_scalar(modify, "lubricatedGridSpacing", caller, common.grid_spacing, message);
-  read_scalar(modify, "lubricatedSaturation", caller, common.eps_saturation, message);
-  given.release = read_scalar(modify, "lubricatedRelease", caller, common.eps_release, message);
-  read_scalar(modify, "lubricatedLegendre", caller, common.legendre, message);
-  double limit_pair = 0.0;
-  read_scalar(modify, "lubricatedLimitPair", caller, limit_pair, message);
+  for (const CoefficientKeyword &row : coefficient_keywords) {
+    double value = 0.0;
+    if (row.id == keyword::e_d || !row.property || !read_scalar(modify, row.property, caller, value, message)) continue;
+    row.set(common, value);
+    given.keyword[row.id] = true;
+  }
+  double limit_pair = 0.0;    // read by the model; here for its style check
+  read_scalar(modify, limit_pair_property, caller, limit_pair, message);
   if (!message.empty()) return table;
   complete_defaults(common, given);
 

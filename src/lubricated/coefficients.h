@@ -1,10 +1,7 @@
-// Coefficients of one contact model (a pair style type pair, or a wall), their keyword
-// syntax and their validation. Shared by every adapter so that the syntax, the defaults and
-// the error messages are the same in pair_coeff, fix wall/lubrication and LIGGGHTS.
-//
-//   e_d [ncontact N | tcontact t_c] [viscosity mu_f] [activation eps_al | activation dem | grid dx]
-//       [saturation eps_1] [release eps_2] [integration exact | sampled]
-//       [friction mu_c] [tangential e_t] [rolling mu_r] [shearfilm yes | no] [legendre A]
+// Coefficients of one contact model (a pair style type pair, or a wall) and their limits.
+// Shared by every adapter so that the syntax, the defaults and the error messages are the same
+// in pair_coeff, fix wall/lubrication and LIGGGHTS; their keywords, parsing, restart order and
+// checks are the table in coefficient_keywords.h (included at the end).
 #pragma once
 
 #include <cmath>
@@ -56,42 +53,9 @@ struct Coefficients {
   }
   double steps_per_contact(double dt) const { return contact_time(dt) / dt; }
 
-  void pack(double *buf) const
-  {
-    const double v[packed_size] = {e_dry,
-                                   n_contact,
-                                   t_contact,
-                                   viscosity,
-                                   eps_activation,
-                                   grid_spacing,
-                                   eps_saturation,
-                                   eps_release,
-                                   exact_contact ? 1.0 : 0.0,
-                                   friction,
-                                   e_tangential,
-                                   rolling_friction,
-                                   static_cast<double>(shearfilm),
-                                   legendre};
-    for (int i = 0; i < packed_size; ++i)
-      buf[i] = v[i];
-  }
-  void unpack(const double *buf)
-  {
-    e_dry = buf[0];
-    n_contact = buf[1];
-    t_contact = buf[2];
-    viscosity = buf[3];
-    eps_activation = buf[4];
-    grid_spacing = buf[5];
-    eps_saturation = buf[6];
-    eps_release = buf[7];
-    exact_contact = buf[8] != 0.0;
-    friction = buf[9];
-    e_tangential = buf[10];
-    rolling_friction = buf[11];
-    shearfilm = static_cast<int>(buf[12]);
-    legendre = buf[13];
-  }
+  // One value per keyword, in the table's order (coefficient_keywords.h): restart files.
+  void pack(double *buf) const;
+  void unpack(const double *buf);
 };
 
 namespace detail {
@@ -151,145 +115,6 @@ inline bool within(double value, double lo, double hi)
 
 }    // namespace detail
 
-// Checks every value against its allowed range; returns "" when all are valid. Conditions
-// are written so that NaN fails them.
-inline std::string validate(const Coefficients &c)
-{
-  using detail::range_error;
-  using detail::within;
-  if (!(c.e_dry > 0.0 && c.e_dry <= 1.0)) return range_error("e_d", c.e_dry, "0 < e_d <= 1");
-  if (c.t_contact > 0.0) {
-    if (!within(c.t_contact, smallest_dimensional, largest_dimensional))
-      return range_error("tcontact", c.t_contact, "1e-100 <= t_c <= 1e100");
-  } else if (!within(c.n_contact, 1.0, largest_steps_per_contact)) {
-    return range_error("ncontact", c.n_contact, "1 <= N_c <= 1e6");
-  }
-  if (!(c.viscosity == 0.0 || within(c.viscosity, smallest_dimensional, largest_dimensional)))
-    return range_error("viscosity", c.viscosity, "mu_f = 0 (dry) or 1e-100 <= mu_f <= 1e100");
-  if (!(c.eps_saturation >= smallest_saturation && c.eps_saturation < 1.0))
-    return range_error("saturation", c.eps_saturation, "1e-12 <= eps_1 < 1");
-  if (!(c.eps_release < c.eps_saturation))
-    return "release = " + detail::number(c.eps_release) +
-           " must be below saturation = " + detail::number(c.eps_saturation) + " (eps_2 < eps_1 required)";
-  if (!(c.friction >= 0.0)) return range_error("friction", c.friction, "mu_c >= 0");
-  if (c.e_tangential != -1.0 && !(c.e_tangential >= 0.0 && c.e_tangential <= 1.0))
-    return range_error("tangential", c.e_tangential, "0 <= e_t <= 1");
-  if (!(c.rolling_friction >= 0.0)) return range_error("rolling", c.rolling_friction, "mu_r >= 0");
-  if (!(c.legendre >= 0.0)) return range_error("legendre", c.legendre, "A >= 0");
-  if (c.legendre > 0.0) {
-    if (!c.wet()) return "legendre needs a wet contact (viscosity > 0)";
-    if (!c.exact_contact) return "legendre needs integration exact";
-    if (c.eps_release < 0.0)
-      return "release = " + detail::number(c.eps_release) +
-             " is out of range with legendre (allowed: 0 <= eps_2 < eps_1; the calibrated contact "
-             "replaces the film in overlap)";
-  }
-  if (c.wet()) {
-    if (c.grid_spacing != 0.0 && !within(c.grid_spacing, smallest_dimensional, largest_dimensional))
-      return range_error("grid", c.grid_spacing, "1e-100 <= dx <= 1e100");
-    if (c.grid_spacing == 0.0) {
-      if (c.eps_activation == 0.0) return "viscosity > 0 requires the activation (eps_al) or grid (dx) keyword";
-      if (!c.dem_activation() && !(c.eps_activation > c.eps_saturation && c.eps_activation <= 1.0))
-        return "activation = " + detail::number(c.eps_activation) +
-               " is out of range (allowed: saturation eps_1 < eps_al <= 1)";
-    }
-  }
-  return "";
-}
-
-// Which of the keywords with alternatives or sentinel defaults were given (pair_coeff words,
-// or LIGGGHTS properties that exist).
-struct Given {
-  bool ncontact = false, tcontact = false, activation = false, grid = false, tangential = false, release = false;
-};
-
-// Defaults that depend on other keywords: with legendre the film ends at contact (eps_2 = 0),
-// because the calibrated contact stands for the film in overlap.
-inline void complete_defaults(Coefficients &c, const Given &given)
-{
-  if (c.legendre > 0.0 && !given.release) c.eps_release = 0.0;
-}
-
-// The checks that depend on which keywords were given, then validate().
-inline std::string validate_given(const Coefficients &c, const Given &given)
-{
-  if (given.ncontact && given.tcontact) return "ncontact and tcontact are mutually exclusive";
-  if (given.activation && given.grid) return "activation and grid are mutually exclusive";
-  if (given.tangential && !(c.e_tangential >= 0.0 && c.e_tangential <= 1.0))
-    return detail::range_error("tangential", c.e_tangential, "0 <= e_t <= 1");
-  if (given.tcontact && !detail::within(c.t_contact, smallest_dimensional, largest_dimensional))
-    return detail::range_error("tcontact", c.t_contact, "1e-100 <= t_c <= 1e100");
-  if (given.grid && !detail::within(c.grid_spacing, smallest_dimensional, largest_dimensional))
-    return detail::range_error("grid", c.grid_spacing, "1e-100 <= dx <= 1e100");
-  return validate(c);
-}
-
-// Parses "e_d keyword value ..." from words[first..]; returns "" on success, else a message
-// naming the offending word. The result is validated.
-inline std::string parse_coefficients(const std::vector<std::string> &words, size_t first, Coefficients &c)
-{
-  c = Coefficients();
-  if (words.size() <= first) return "missing e_d (dry restitution coefficient)";
-  if (!detail::to_number(words[first], c.e_dry)) return "expected a number for e_d, got '" + words[first] + "'";
-  Given given;
-  for (size_t i = first + 1; i < words.size(); i += 2) {
-    const std::string &key = words[i];
-    if (key == "integration") {
-      if (i + 1 >= words.size()) return "missing value for keyword integration";
-      if (words[i + 1] != "exact" && words[i + 1] != "sampled")
-        return "integration must be exact or sampled, got '" + words[i + 1] + "'";
-      c.exact_contact = words[i + 1] == "exact";
-      continue;
-    }
-    if (key == "shearfilm") {
-      if (i + 1 >= words.size()) return "missing value for keyword shearfilm";
-      if (words[i + 1] != "yes" && words[i + 1] != "no")
-        return "shearfilm must be yes or no, got '" + words[i + 1] + "'";
-      c.shearfilm = words[i + 1] == "yes" ? 1 : 0;
-      continue;
-    }
-    if (key == "activation" && i + 1 < words.size() && words[i + 1] == "dem") {
-      c.eps_activation = activation_dem, given.activation = true;
-      continue;
-    }
-    double *target = nullptr;
-    if (key == "ncontact")
-      target = &c.n_contact, given.ncontact = true;
-    else if (key == "tcontact")
-      target = &c.t_contact, given.tcontact = true;
-    else if (key == "viscosity")
-      target = &c.viscosity;
-    else if (key == "activation")
-      target = &c.eps_activation, given.activation = true;
-    else if (key == "grid")
-      target = &c.grid_spacing, given.grid = true;
-    else if (key == "saturation")
-      target = &c.eps_saturation;
-    else if (key == "release")
-      target = &c.eps_release, given.release = true;
-    else if (key == "friction")
-      target = &c.friction;
-    else if (key == "tangential")
-      target = &c.e_tangential, given.tangential = true;
-    else if (key == "rolling")
-      target = &c.rolling_friction;
-    else if (key == "legendre")
-      target = &c.legendre;
-    else
-      return "unknown keyword '" + key +
-             "' (expected ncontact, tcontact, viscosity, activation, grid, saturation, release, "
-             "integration, friction, tangential, rolling, shearfilm or legendre)";
-    if (i + 1 >= words.size()) return "missing value for keyword " + key;
-    if (!detail::to_number(words[i + 1], *target))
-      return "expected a number for keyword " + key + (key == "activation" ? " (or dem)" : "") + ", got '" +
-             words[i + 1] + "'";
-    if (target == &c.eps_activation && c.dem_activation())
-      return detail::range_error("activation", c.eps_activation, "saturation eps_1 < eps_al <= 1, or dem");
-  }
-  complete_defaults(c, given);
-  return validate_given(c, given);
-}
-
 // Checks that depend on the time step; returns "" when fine. The contact must last
 // 1 <= N_c <= 1e6 steps (largest_steps_per_contact) and t_c = N_c dt, from which k/m_e and
 // c/m_e follow, 1e-100...1e100 time units (smallest_dimensional, largest_dimensional).
@@ -325,33 +150,6 @@ inline void settle_contact_time(Coefficients &c, double dt)
   if (!(c.t_contact > 0.0) && !(c.settled_contact_time > 0.0)) c.settled_contact_time = c.n_contact * dt;
 }
 
-// The coefficients as pair_coeff words (write_data's Pair Coeffs): parse_coefficients() of this
-// text gives them back exactly (%.17g). Keywords at their defaults are left out.
-inline std::string coefficients_words(const Coefficients &c)
-{
-  auto number = [](double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    return std::string(text);
-  };
-  std::string words = number(c.e_dry);
-  words += c.t_contact > 0.0 ? " tcontact " + number(c.t_contact) : " ncontact " + number(c.n_contact);
-  if (c.wet()) {
-    words += " viscosity " + number(c.viscosity);
-    words += c.grid_spacing > 0.0 ? " grid " + number(c.grid_spacing)
-             : c.dem_activation() ? std::string(" activation dem")
-                                  : " activation " + number(c.eps_activation);
-    words += " saturation " + number(c.eps_saturation) + " release " + number(c.eps_release);
-  }
-  if (!c.exact_contact) words += " integration sampled";
-  if (c.friction > 0.0) words += " friction " + number(c.friction);
-  if (c.e_tangential >= 0.0) words += " tangential " + number(c.e_tangential);
-  if (c.rolling_friction > 0.0) words += " rolling " + number(c.rolling_friction);
-  if (c.shearfilm >= 0) words += c.shearfilm == 1 ? " shearfilm yes" : " shearfilm no";
-  if (c.legendre > 0.0) words += " legendre " + number(c.legendre);
-  return words;
-}
-
 // Advice that is not an error: the paper finds N_c = 8 the smallest count that keeps e_d. A t_c
 // of exactly 8 steps computed in floating point (7.999999999999999) is 8.
 inline std::string time_step_warning(const Coefficients &c, double dt)
@@ -363,3 +161,5 @@ inline std::string time_step_warning(const Coefficients &c, double dt)
 }
 
 }    // namespace lubricated
+
+#include "lubricated/coefficient_keywords.h"

@@ -7,7 +7,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <cstdlib>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -312,4 +314,84 @@ TEST(Coefficients, WordsParseBackExactly)
     for (int k = 0; k < Coefficients::packed_size; k++)
       EXPECT_EQ(a[k], b[k]) << line << " -> " << words << " (value " << k << ")";
   }
+}
+
+// Random valid pair_coeff lines in random keyword order: the keyword table carries every value
+// through parse, a restart file (pack, unpack), write_data's words and parse again unchanged.
+static std::string random_line(std::mt19937 &rng)
+{
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  auto chance = [&](double p) { return unit(rng) < p; };
+  auto text = [](double value) {
+    char t[32];
+    std::snprintf(t, sizeof t, "%.17g", value);
+    return std::string(t);
+  };
+  auto log_uniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, unit(rng)); };
+  std::vector<std::string> pairs;
+  if (chance(0.3))
+    pairs.push_back("ncontact " + text(std::floor(log_uniform(1.0, 1e6))));
+  else if (chance(0.4))
+    pairs.push_back("tcontact " + text(log_uniform(1e-9, 1e-2)));
+  const bool wet = chance(0.6), exact = chance(0.8);
+  const double saturation = chance(0.5) ? log_uniform(1e-6, 1e-2) : 1e-3;
+  if (saturation != 1e-3 || chance(0.2)) pairs.push_back("saturation " + text(saturation));
+  const bool legendre = wet && exact && chance(0.3);
+  if (legendre) pairs.push_back("legendre " + text(log_uniform(1.0, 100.0)));
+  if (chance(0.5)) pairs.push_back("release " + text(legendre ? saturation * unit(rng) : -log_uniform(1e-4, 1e-1)));
+  if (wet) {
+    pairs.push_back("viscosity " + text(log_uniform(1e-5, 1.0)));
+    const double pick = unit(rng);
+    pairs.push_back(pick < 0.3   ? "grid " + text(log_uniform(1e-6, 1e-3))
+                    : pick < 0.5 ? std::string("activation dem")
+                                 : "activation " + text(saturation + (1.0 - saturation) * (0.01 + 0.99 * unit(rng))));
+  } else if (chance(0.3)) {
+    pairs.push_back("activation " + text(0.5 * unit(rng)));
+  }
+  if (!exact || chance(0.2)) pairs.push_back(exact ? "integration exact" : "integration sampled");
+  if (chance(0.5)) pairs.push_back("friction " + text(unit(rng)));
+  if (chance(0.4)) pairs.push_back("tangential " + text(unit(rng)));
+  if (chance(0.4)) pairs.push_back("rolling " + text(0.1 * unit(rng)));
+  if (chance(0.4)) pairs.push_back(chance(0.5) ? "shearfilm yes" : "shearfilm no");
+  std::shuffle(pairs.begin(), pairs.end(), rng);
+  std::string line = text(0.01 + 0.99 * unit(rng));
+  for (const std::string &pair : pairs)
+    line += " " + pair;
+  return line;
+}
+
+TEST(Coefficients, KeywordTableRoundTripsRandomInput)
+{
+  std::mt19937 rng(44);
+  for (int trial = 0; trial < 3000; trial++) {
+    const std::string line = random_line(rng);
+    Coefficients c, back;
+    ASSERT_EQ(parse(line, c), "") << line;
+    const std::string words = coefficients_words(restart_copy(c));
+    ASSERT_EQ(parse(words, back), "") << line << " -> " << words;
+    double a[Coefficients::packed_size], b[Coefficients::packed_size];
+    c.pack(a);
+    back.pack(b);
+    for (int k = 0; k < Coefficients::packed_size; k++)
+      ASSERT_EQ(a[k], b[k]) << line << " -> " << words << " (" << coefficient_keywords[k].name << ")";
+  }
+}
+
+// The restart file's order of values is the table's: files written before the table read the same.
+TEST(Coefficients, RestartOrderIsTheTableOrder)
+{
+  Coefficients c;
+  ASSERT_EQ(parse("0.7 tcontact 2e-4 viscosity 3e-3 activation 0.2 saturation 2e-3 release -0.02 integration "
+                  "sampled friction 0.3 tangential 0.4 rolling 0.05 shearfilm no",
+                  c),
+            "");
+  const double expected[] = {0.7, 8.0, 2e-4, 3e-3, 0.2, 0.0, 2e-3, -0.02, 0.0, 0.3, 0.4, 0.05, 0.0, 0.0};
+  ASSERT_EQ(sizeof expected / sizeof expected[0], static_cast<size_t>(Coefficients::packed_size));
+  double buf[Coefficients::packed_size];
+  c.pack(buf);
+  for (int k = 0; k < Coefficients::packed_size; k++)
+    EXPECT_EQ(buf[k], expected[k]) << coefficient_keywords[k].name;
+  EXPECT_EQ(parse("0.9 viscosity 1e-3 activation 0.1 size 3", c),
+            "unknown keyword 'size' (expected ncontact, tcontact, viscosity, activation, grid, saturation, release, "
+            "integration, friction, tangential, rolling, shearfilm or legendre)");
 }
