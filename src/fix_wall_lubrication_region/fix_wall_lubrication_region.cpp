@@ -195,15 +195,15 @@ void FixWallLubricationRegion::compute_walls(bool defer_films)
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-  const lub::Evaluation when =
-      continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
+  const lub::EvaluationKind kind =
+      lub::evaluation_kind(update->dt, update->setupflag != 0, continued, midpoint != nullptr);
+  const lub::Evaluation when = kind.when;
 
   clear_sums();
   films_pending = defer_films = defer_films && model.normal.lubrication.active();
   shear_pending = defer_films && model.tangential.film_active();
   clear_films();
-  const double kick_time =
-      lub::film_kick_time(update->dt, when != lub::Evaluation::step, when == lub::Evaluation::midpoint_start);
+  const double kick_time = kind.kick_time;
   update_motion();
 
   if (!contact_mass.active()) {

@@ -292,9 +292,9 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   loop.models = models.data(), loop.stride = stride;
   loop.nlocal = atom->nlocal, loop.newton_pair = force->newton_pair;
   loop.dt = update->dt;
-  loop.when = continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
-  loop.kick_time =
-      lub::film_kick_time(loop.dt, loop.when != lub::Evaluation::step, loop.when == lub::Evaluation::midpoint_start);
+  const lub::EvaluationKind kind =
+      lub::evaluation_kind(loop.dt, update->setupflag != 0, continued, midpoint != nullptr);
+  loop.when = kind.when, loop.kick_time = kind.kick_time;
   loop.budget = WET && film_budget_now;
   loop.steps = !update->setupflag;
   auto evaluate = [ this, loop ](int i, int j, int jj) __attribute__((always_inline))
