@@ -15,6 +15,7 @@
 ------------------------------------------------------------------------- */
 
 #include "lubricated/contact.h"
+#include "lubricated/vector_clones.h"
 #include "pair_lubricated_springdashpot/vector_pairs.h"
 
 #include <algorithm>
@@ -27,19 +28,13 @@
 namespace lub = lubricated;
 namespace vp = LAMMPS_NS::vector_pairs;
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
-#define FILM_ARITHMETIC_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define FILM_ARITHMETIC_CLONES
-#endif
-
 // The pairs' data in order (d: x_i - x_j, w: v_i - v_j).
 struct PairArrays {
   std::vector<double> dx, dy, dz, wx, wy, wz, radius_i, radius_j, mass_i, mass_j;
 };
 
 // vector_pairs.cpp's film_only_loop without its gathers: the same geometry, film and outputs.
-FILM_ARITHMETIC_CLONES __attribute__((noinline)) static void
+LUBRICATED_VECTOR_CLONES __attribute__((noinline)) static void
 film_contiguous(const lub::NormalModel &model, const PairArrays &p, int first, int n, double *__restrict fx,
                 double *__restrict fy, double *__restrict fz, double *__restrict film, double *__restrict capacity)
 {

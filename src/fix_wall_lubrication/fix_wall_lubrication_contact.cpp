@@ -32,14 +32,15 @@ void FixWallLubricationBase::begin_evaluation(bool defer_films)
   const bool continued = step_velocity && step_velocity->continues() && !contact_mass.holds_or_rigid();
   pass.v = continued ? step_velocity->velocity() : atom->v;
   pass.omega = continued ? step_velocity->spin() : atom->omega;
-  pass.when = continued ? lub::Evaluation::step : lub::evaluation_of(update->setupflag != 0, midpoint != nullptr);
+  const lub::EvaluationKind kind =
+      lub::evaluation_kind(update->dt, update->setupflag != 0, continued, midpoint != nullptr);
+  pass.when = kind.when;
 
   clear_sums();
   films_pending = pass.defer_films = defer_films && model.normal.lubrication.active();
   shear_pending = pass.defer_films && model.tangential.film_active();
   clear_films();
-  pass.kick_time =
-      lub::film_kick_time(update->dt, pass.when != lub::Evaluation::step, pass.when == lub::Evaluation::midpoint_start);
+  pass.kick_time = kind.kick_time;
 
   // m_e = m; the body's mass for an atom of a rigid body; an immovable atom is left alone.
   // Atoms change index only where the lists are rebuilt (or a run starts).

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "lubricated/normal_model.h"
+#include "lubricated/pair_geometry.h"
 
 #include <algorithm>
 #include <vector>
@@ -53,17 +54,10 @@ inline bool film_apart(const NormalModel &model, double gap, const FilmRadius &r
   return true;
 }
 
-// What the loop reads of the atoms: positions and velocities as n x 3 arrays (LIGGGHTS's x[0],
-// v[0]: one block), radii and masses.
-struct CloseAtoms {
-  const double *x, *v, *radius, *rmass;
-};
-
-enum CloseState : int { close_idle = 0, close_film = 1, close_general = 2 };
-
 struct ClosePairs {
-  // Per pair, from evaluate(): CloseState; the film force on i (3 components) [force], its value
-  // along n [force] where close_film; the film's capacity m_e |u_n| [momentum].
+  // Per pair, from evaluate(): FilmPairState (lubricated/film_only_loop.h); the film force on i
+  // (3 components) [force], its value along n [force] where film_pair_apart; the film's capacity
+  // m_e |u_n| [momentum].
   std::vector<int> state;
   std::vector<double> force_x, force_y, force_z, film, capacity;
 
@@ -80,7 +74,7 @@ struct ClosePairs {
 
   // A step (velocities are v^(n-1/2)) of the exact model `model` (exact contact, active film) for
   // every listed pair, reduced masses m_i m_j / (m_i + m_j) (no rigid body, no held atom).
-  void evaluate(const CloseAtoms &atoms, const NormalModel &model);
+  void evaluate(const PairAtoms &atoms, const NormalModel &model);
 
   // evaluate(), then each force applied as LIGGGHTS applies a pair's (its relax factor; j's
   // share where newton_pair or j is owned), and each film recorded in the film budget (budget:

@@ -43,6 +43,7 @@ NORMAL_MODEL(LUBRICATED, lubricated, 42)
 #include "liggghts/lubricated_properties.h"
 #include "liggghts/setforce_holds.h"
 #include "lubricated/check_setup.h"
+#include "lubricated/contact.h"
 #include "lubricated/contact_network.h"
 #include "lubricated/film_budget.h"
 #include "lubricated/normal_model.h"
@@ -96,27 +97,9 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // pair a history). Called by the pair's pass (pair_pass.h) once its models are built, as for a
   // pair style read from a restart file (which calls no postSettings), with the history values
   // registered so far.
-  void keep_lambda_in_history(IContactHistorySetup *hsetup, int history_values)
-  {
-    if (is_wall_ || history_values == 0 || lambda_offset_ >= 0) return;
-    lambda_offset_ = hsetup->add_history_value("lubricatedEpsAl", "0");
-    hsetup->add_history_value("lubricatedLambdaAl", "0");
-  }
+  void keep_lambda_in_history(IContactHistorySetup *hsetup, int history_values);
 
-  void beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &)
-  {
-    if (is_wall_) return;
-    if (update->dt != dt_) build_models();
-    bound_idle_pairs();
-    plain_masses_ =
-        hold_bits_ == 0 && (integrate_bits_ & all_group_bit) && pair_->freeze_group_bit() == 0 && !pair_->fr_pair();
-    defer_close_ = defer_close_pairs(sidata);
-    close_type_ = -1;
-    close_.clear();
-    if (!budget_) return;
-    if (budget_on_ && (neighbor->ago == 0 || update->setupflag || update->dt != bound_dt_)) bound_film_shares();
-    budget_->begin_pass();
-  }
+  void beginPass(SurfacesIntersectData &sidata, ForceData &, ForceData &);
   void endPass(SurfacesIntersectData &, ForceData &, ForceData &)
   {
     if (close_.size() > 0) apply_close_pairs();
@@ -124,49 +107,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   double stressStrainExponent() { return 1.0; }
 
   // Called at every run's init: read the properties, build the per-type-pair models.
-  void connectToProperties(PropertyRegistry &)
-  {
-    const char *caller = is_wall_ ? "fix wall/gran model lubricated" : "pair gran model lubricated";
-    ntypes_ = atom->ntypes;
-    if (!atom->radius_flag || !atom->rmass_flag)
-      error->all(FLERR, "model lubricated requires atom_style sphere (per-atom radius and rmass)");
-    coefficients_ = lubricated::liggghts::read_coefficients(modify, ntypes_, caller, message_);
-    if (!message_.empty()) fail(message_);
-    build_models();
-
-    // The film acts up to its reach beyond contact; the step-exact contact also needs one step
-    // of approach before contact. LIGGGHTS calls surfacesClose() for gaps below
-    // (factor - 1) (r_i + r_j) (pairs) or (factor - 1) r_i (walls).
-    const double none = 1e300;
-    double r_min = none;
-    for (int i = 0; i < atom->nlocal; i++)
-      r_min = std::min(r_min, atom->radius[i]);
-    double r_min_all = none;
-    MPI_Allreduce(&r_min, &r_min_all, 1, MPI_DOUBLE, MPI_MIN, world);
-    const double reach =
-        lubricated::liggghts::reach_fraction(coefficients_, ntypes_, is_wall_, r_min_all < none ? r_min_all : 0.0);
-    for (const lubricated::Coefficients &c : coefficients_) {
-      const std::string problem = lubricated::validate_grid_for_radius(c, r_min_all < none ? r_min_all : 0.0);
-      if (!problem.empty()) fail(std::string(caller) + ": " + lubricated::liggghts::with_property_names(problem));
-    }
-    if (reach < 0.0)
-      error->all(FLERR, "model lubricated: lubricatedGridSpacing needs the particles to exist "
-                        "before the run (insert them first, or give lubricatedActivation)");
-    neighbor->register_contact_dist_factor(1.0 + reach + lubricated::liggghts::approach_margin);
-    warned_ = false;
-    if (!is_wall_) find_immovable_groups();
-    step_velocity_ = lubricated::liggghts::FixLubricatedStepVelocity::find_or_create(lmp);
-    // With a grid spacing the factor covers the radii from r_min up: a smaller sphere inserted
-    // during the run raises it before the neighbor list build where it appears.
-    if (lubricated::liggghts::reach_fraction(coefficients_, ntypes_, is_wall_, 0.0) < 0.0)
-      lubricated::liggghts::watch_radius(lmp, this, r_min_all,
-                                         [this, caller, r_min_all](double r) { smaller_radius(r, r_min_all, caller); });
-    else
-      lubricated::liggghts::forget_radius(this);
-    join_film_budget(caller);
-    if (is_wall_) check_primitive_wall_list(caller);
-    report_setup(caller);
-  }
+  void connectToProperties(PropertyRegistry &);
 
   inline void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
   {
@@ -234,12 +175,12 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // of the smallest radius; about five pairs per sphere and step): in a step the pair's are
   // listed for the vectorised loop, run for every close_piece of them (close_pairs.h). The
   // listing and the test that most pairs fail are inlined into the pair's pass (GCC left them a
-  // call: 3-13 % of an active bed's time), the rest is a call.
+  // call, a large part of an active bed's time), the rest is a call.
   // A pair apart holds no history of this model (lambda(eps_al) is kept for contacts in overlap),
   // so its flag is cleared, as the tangential model clears its own: LIGGGHTS then keeps no
   // partner record for a film, and the lean pass takes the pair as one without a flag. A flag
-  // left set by every film made nearly all close pairs of a wet bed flagged (99.7 % on the active
-  // 2000 bed), each re-stored at every neighbour build and visited in full by the pass.
+  // left set by every film made nearly all close pairs of a wet bed flagged, each re-stored at
+  // every neighbour build and visited in full by the pass.
   // A wall's history is LIGGGHTS's per-atom wall history: its flag is left as LIGGGHTS's models do.
   __attribute__((always_inline)) inline void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces,
                                                            ForceData &j_forces)
@@ -263,35 +204,10 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // The close pairs listed so far, evaluated and applied while their atoms are still in the cache
   // (a piece of the pass; the film budget takes its records at the step's end).
   static constexpr int close_piece = 1024;
-  __attribute__((noinline)) void apply_close_pairs()
-  {
-    close_.apply(lmp, pair_, models_[close_type_], budget_on_ ? budget_ : nullptr);
-    close_.clear();
-  }
+  __attribute__((noinline)) void apply_close_pairs();
 
   __attribute__((noinline)) void close_pair_acts(SurfacesCloseData &scdata, const lubricated::NormalModel &model,
-                                                 ForceData &i_forces, ForceData &j_forces)
-  {
-    const double *vi = scdata.v_i, *vj = scdata.v_j;
-    const bool continued = step_velocity_->continues();
-    const double r = std::sqrt(scdata.rsq), r_inverse = 1.0 / r;
-    const double en[3] = {scdata.delta[0] * r_inverse, scdata.delta[1] * r_inverse, scdata.delta[2] * r_inverse};
-    const double gap = r - scdata.radsum;
-    double u_n = (vi[0] - vj[0]) * en[0] + (vi[1] - vj[1]) * en[1] + (vi[2] - vj[2]) * en[2];
-    if (continued) u_n -= step_velocity_->kick_along(scdata.i, partner(scdata), en);
-    const lubricated::FilmRadius radius = film_radius(scdata);
-    if (!model.acts(gap, radius.value, u_n)) return;
-    const double m_e = reduced_mass(scdata);
-    lubricated::NormalForce fn;
-    if (!lubricated::liggghts::film_apart(model, gap, radius, m_e, u_n, stepping(continued), fn))
-      fn = lubricated::normal_force(model, gap, radius, m_e, u_n, evaluation(continued));
-    if (fn.total() == 0.0) return;
-    if (is_wall_ && scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;    // pairs: none apart
-    apply(fn.total() * (is_wall_ ? scdata.area_ratio : 1.0), en, i_forces, j_forces);
-    scdata.has_force_update = true;
-    if (fn.lubrication != 0.0 && budget_on_ && budget_->active())
-      record_film(scdata, fn.lubrication * (is_wall_ ? scdata.area_ratio : 1.0), en, m_e, u_n, continued);
-  }
+                                                 ForceData &i_forces, ForceData &j_forces);
 
   // idle_reach(): beyond radsum + the film's reach + what both atoms can move in the step, no
   // type pair's model acts (NormalModel::acts false: gap >= reach(R) + |u_n| dt). The reach is
@@ -299,18 +215,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // move is bounded by the largest |v|_1 dt of the rank's atoms, ghosts included (v^(n-1/2), as
   // u_n). A relative margin of 1e-9 covers the rounding of the tests. A continued run's kick
   // changes u_n: no pair is idle there.
-  void bound_idle_pairs()
-  {
-    idle_scale_ = 1.0, idle_offset_ = INFINITY;
-    if (step_velocity_->continues()) return;
-    const double *v = atom->v[0];
-    const int nall = atom->nlocal + atom->nghost;
-    double speed_max = 0.0;
-    for (int k = 0; k < nall; k++)
-      speed_max = std::max(speed_max, std::fabs(v[3 * k]) + std::fabs(v[3 * k + 1]) + std::fabs(v[3 * k + 2]));
-    idle_scale_ = (1.0 + 0.5 * film_eps_max_) * (1.0 + 1e-9);
-    idle_offset_ = (film_reach_max_ + 2.0 * speed_max * dt_) * (1.0 + 1e-9);
-  }
+  void bound_idle_pairs();
 
   // lambda(eps_al) of a contact's film (Lubrication::lambda_activation_for, a logarithm): kept in
   // the contact's history with eps_al as its key, which fixes it (the film radius and the grid
@@ -333,12 +238,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // contact to one loop at its end (close_pairs.h): a step, plain reduced masses, forces applied, and
   // nothing that reads each pair's force (virial, compute pair/gran/local, stored contact
   // forces, summed normal forces).
-  bool defer_close_pairs(const SurfacesIntersectData &sidata)
-  {
-    if (update->setupflag || !sidata.computeflag || !plain_masses_) return false;
-    return !pair_->evflag && !pair_->cpl() && !pair_->storeContactForces() && !pair_->storeContactForcesStress() &&
-           !pair_->store_sum_normal_force();
-  }
+  bool defer_close_pairs(const SurfacesIntersectData &sidata);
 
   // The type pair whose close pairs the loop takes this pass: the first wet one with the exact
   // contact (the others one by one).
@@ -408,18 +308,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
 
   // Atoms no contact moves: left out of every time integration, or in the group of fix freeze,
   // fix move or fix setforce 0 0 0 without a region (the LAMMPS plugin's contact masses).
-  void find_immovable_groups()
-  {
-    integrate_bits_ = hold_bits_ = 0;
-    for (int k = 0; k < modify->nfix; k++) {
-      const LAMMPS_NS::Fix *fix = modify->fix[k];
-      if (std::strcmp(fix->style, "freeze") == 0 || std::strcmp(fix->style, "move") == 0 ||
-          (std::strcmp(fix->style, "setforce") == 0 && lubricated::liggghts::setforce_holds(modify->fix[k])))
-        hold_bits_ |= fix->groupbit;
-      else if (fix->time_integrate)
-        integrate_bits_ |= fix->groupbit;
-    }
-  }
+  void find_immovable_groups();
 
   bool immovable(int i) const
   {
@@ -429,52 +318,12 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
 
   // The checks and the description every adapter gives (lubricated/check_setup.h): one line
   // per type pair of this pair style (or per atom type at this wall), each WARNING once.
-  void report_setup(const char *caller)
-  {
-    if (comm->me != 0) return;
-    const int wall_type = is_wall_ ? static_cast<LAMMPS_NS::FixWallGran *>(hsetup_)->atom_type_wall() : 0;
-    std::set<std::string> warnings;
-    for (int i = 1; i <= ntypes_; i++)
-      for (int j = is_wall_ ? wall_type : i; j <= (is_wall_ ? wall_type : ntypes_); j++) {
-        if (j < 1 || j > ntypes_) continue;
-        const lubricated::SetupCheck check =
-            lubricated::check_setup(coefficients_[i * (ntypes_ + 1) + j],
-                                    is_wall_ ? lubricated::Partner::wall : lubricated::Partner::particle, update->dt);
-        const std::string line = std::string(caller) + " types " + std::to_string(i) + " " + std::to_string(j) + ": " +
-                                 check.description + "\n";
-        if (screen) fputs(line.c_str(), screen);
-        if (logfile) fputs(line.c_str(), logfile);
-        for (const std::string &w : check.warnings)
-          warnings.insert(std::string(caller) + ": " + lubricated::liggghts::with_property_names(w));
-      }
-    for (const std::string &w : warnings)
-      error->warning(FLERR, w.c_str());
-  }
+  void report_setup(const char *caller);
 
   // A sphere of radius r, smaller than the smallest at the run's start (r_start), appeared: the
   // film of a grid spacing reaches 0.75 dx whatever the radius, i.e. farther in units of its
   // radius. Checked (eps_al <= 1) and covered as at the run's start, before the neighbor build.
-  void smaller_radius(double r, double r_start, const char *caller)
-  {
-    for (const lubricated::Coefficients &c : coefficients_) {
-      const std::string problem = lubricated::validate_grid_for_radius(c, r);
-      if (!problem.empty())
-        fail(std::string(caller) + ": a sphere of radius " + lubricated::detail::number(r) +
-             " appeared during the run (the smallest at its start: " + lubricated::detail::number(r_start) +
-             "): " + lubricated::liggghts::with_property_names(problem) +
-             ". Use a smaller lubricatedGridSpacing, or lubricatedActivation");
-    }
-    const double reach = lubricated::liggghts::reach_fraction(coefficients_, ntypes_, is_wall_, r);
-    neighbor->register_contact_dist_factor(1.0 + reach + lubricated::liggghts::approach_margin);
-    if (comm->me == 0) {
-      const std::string line = std::string(caller) + ": a sphere of radius " + lubricated::detail::number(r) +
-                               " appeared (the smallest at the run's start: " + lubricated::detail::number(r_start) +
-                               "); the film of lubricatedGridSpacing now raises the contact distance factor to " +
-                               lubricated::detail::number(neighbor->contactDistanceFactor) + "\n";
-      if (screen) fputs(line.c_str(), screen);
-      if (logfile) fputs(line.c_str(), logfile);
-    }
-  }
+  void smaller_radius(double r, double r_start, const char *caller);
 
   // LIGGGHTS 3.8.0 lists a sphere near a primitive wall when its gap is below the neighbor skin at
   // a build (FixWallGran::pre_force: PrimitiveWall::buildNeighList(skin)), whatever the contact
@@ -482,136 +331,28 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // gap of skin / 2 unseen. Its film, reaching 0.75 dx (or eps_al r), is then missed for part of
   // the approach (e 0.4444 instead of 0.4333 at skin 5e-5, 0.75 dx = 1.5e-4). A mesh wall's list
   // (FixNeighlistMesh) covers r * factor + skin / 2 and needs no check.
-  void check_primitive_wall_list(const char *caller)
-  {
-    auto *wall = static_cast<LAMMPS_NS::FixWallGran *>(hsetup_);
-    const int wall_type = wall->atom_type_wall();
-    if (wall->is_mesh_wall() || wall_type < 1 || wall_type > ntypes_) return;
-    double r_max = 0.0, r_max_all = 0.0;
-    for (int i = 0; i < atom->nlocal; i++)
-      r_max = std::max(r_max, atom->radius[i]);
-    MPI_Allreduce(&r_max, &r_max_all, 1, MPI_DOUBLE, MPI_MAX, world);
-    double reach = 0.0;
-    std::string how;
-    for (int t = 1; t <= ntypes_; t++) {
-      const lubricated::Coefficients &c = coefficients_[t * (ntypes_ + 1) + wall_type];
-      if (!c.wet()) continue;
-      if (c.grid_spacing > 0.0) {
-        const double r = lubricated::Lubrication::grid_activation * c.grid_spacing;
-        if (r > reach)
-          reach = r, how = "2 x 0.75 lubricatedGridSpacing = 2 x 0.75 x " + lubricated::detail::number(c.grid_spacing);
-      } else if (c.eps_activation > 0.0 && c.eps_activation * r_max_all > reach) {
-        reach = c.eps_activation * r_max_all;
-        how = "2 x lubricatedActivation x the largest radius = 2 x " + lubricated::detail::number(c.eps_activation) +
-              " x " + lubricated::detail::number(r_max_all);
-      }
-    }
-    if (neighbor->skin >= 2.0 * reach * (1.0 - 1e-12)) return;
-    fail(std::string(caller) + ": the film reaches " + lubricated::detail::number(reach) +
-         " from this primitive wall, but LIGGGHTS lists a sphere near a primitive wall only within the neighbor "
-         "skin (" +
-         lubricated::detail::number(neighbor->skin) +
-         ") at a neighbor build and rebuilds after a sphere moved skin / 2, whatever the contact distance "
-         "factor: the film would be missed for part of an approach. Use neighbor skin >= " +
-         how + " = " + lubricated::detail::number(2.0 * reach) + ", or a mesh wall");
-  }
+  void check_primitive_wall_list(const char *caller);
 
   // The pair's model creates the budget fix (and keeps it after the walls); a wall joins it when
   // it exists. Dry scenes take no part: the fix then does nothing.
-  void join_film_budget(const char *caller)
-  {
-    double limit_pair = 0.0;
-    std::string style_error;    // reported by read_coefficients already
-    if (lubricated::liggghts::read_scalar(modify, "lubricatedLimitPair", caller, limit_pair, style_error) &&
-        limit_pair != 0.0 && limit_pair != 1.0)
-      fail(std::string(caller) + ": lubricatedLimitPair = " + lubricated::detail::number(limit_pair) +
-           " must be 0 (the films of each sphere share its many-body budget, the default) or 1 "
-           "(each film capped on its own)");
-    bool wet = false;
-    for (const lubricated::Coefficients &c : coefficients_)
-      wet = wet || c.wet();
-    std::vector<double> normal, bound;
-    const bool network = network_loads(normal, bound);
-    budget_ = lubricated::liggghts::FixLubricatedFilmBudget::find(lmp, !is_wall_ && (wet || network));
-    budget_on_ = budget_ && wet;
-    bound_dt_ = -1.0;
-    if (!budget_) return;
-    if (!is_wall_) {
-      budget_->set_network(ntypes_, normal, bound, coefficients_);
-      budget_->set_immovable_groups(integrate_bits_, hold_bits_);
-    }
-    if (!budget_on_) return;
-    budget_->take_part(limit_pair == 1.0);
-    if (is_wall_) {    // the films of the wall's type with each atom type
-      auto *wall = static_cast<LAMMPS_NS::FixWallGran *>(hsetup_);
-      const int wall_type = wall->atom_type_wall();
-      const bool known = wall_type >= 1 && wall_type <= ntypes_;
-      std::vector<lubricated::Lubrication> by_type(ntypes_ + 1);
-      for (int t = 1; known && t <= ntypes_; t++)
-        by_type[t] = models_[t * (ntypes_ + 1) + wall_type].lubrication;
-      budget_->add_wall_films(by_type, wall->is_mesh_wall() || !known);    // unknown: no bound
-    }
-  }
+  void join_film_budget(const char *caller);
 
   // At each neighbor list build (and a new time step): the share bounds of the pairs of the list
   // that can reach the film before the next build (they close by at most the skin), summed per
   // atom with the walls' by the budget fix, which skips the budget where no sum exceeds 1.
-  void bound_film_shares()
-  {
-    if (update->dt != dt_) build_models();
-    bound_dt_ = update->dt;
-    double *bound = budget_->bound_of_atoms();
-    double **x = atom->x;
-    const double *radius = atom->radius;
-    const int *type = atom->type;
-    const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
-    const double skin = neighbor->skin;
-    const LAMMPS_NS::NeighList *list = pair_->list;
-    for (int ii = 0; ii < list->inum; ii++) {
-      const int i = list->ilist[ii];
-      const int *jlist = list->firstneigh[i];
-      for (int jj = 0; jj < list->numneigh[i]; jj++) {
-        const int j = jlist[jj] & NEIGHMASK;
-        const lubricated::Lubrication &film = models_[type[i] * (ntypes_ + 1) + type[j]].lubrication;
-        if (!film.active()) continue;
-        const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
-        const double film_radius = lubricated::film_radius_pair(radius[i], radius[j]).value;
-        const double reach = radius[i] + radius[j] + film.reach(film_radius) + skin;
-        if (dx * dx + dy * dy + dz * dz >= reach * reach) continue;
-        const double b = lubricated::film_share_bound(film, film_radius, pair_reduced_mass(i, j), dt_);
-        bound[i] += b;
-        if (newton_pair || j < nlocal) bound[j] += b;
-      }
-    }
-    budget_->decide_skip();
-  }
+  void bound_film_shares();
 
   // Loads of a sustained contact per type pair (contact_network.h): the exact normal contact's,
   // and the larger of it and LIGGGHTS's explicit tangential spring-dashpot's (kt = 2/7 k and
   // gammat = 2/7 c on the tangential mass 2/7 m_e: the sampled normal load). True when one
   // can matter.
-  bool network_loads(std::vector<double> &normal, std::vector<double> &bound) const
-  {
-    normal.assign(models_.size(), 0.0);
-    bound.assign(models_.size(), 0.0);
-    bool matters = false;
-    for (int i = 1; i <= ntypes_; i++)
-      for (int j = 1; j <= ntypes_; j++) {
-        const int t = i * (ntypes_ + 1) + j;
-        const lubricated::NormalModel &m = models_[t];
-        normal[t] = lubricated::contact_load(m.step.stiffness_step, m.step.damping_step, dt_);
-        bound[t] = std::max(normal[t],
-                            lubricated::contact_load(m.contact.stiffness_per_mass, m.contact.damping_per_mass, dt_));
-        matters = matters || bound[t] > lubricated::network_check_load;
-      }
-    return matters;
-  }
+  bool network_loads(std::vector<double> &normal, std::vector<double> &bound) const;
 
   // The film's share of its cap over the time it acts before the next evaluation (film_budget.h).
   void record_film(const SurfacesCloseData &scdata, double film, const double *en, double m_e, double u_n,
                    bool continued)
   {
-    const double kick = lubricated::film_kick_time(update->dt, update->setupflag && !continued, false);
+    const double kick = evaluation_kind(continued).kick_time;
     const double f[3] = {film * en[0], film * en[1], film * en[2]};
     budget_->add_film(scdata.i, is_wall_ ? -1 : scdata.j, f, lubricated::film_share(film, m_e, u_n, kick));
   }
@@ -619,10 +360,11 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   // LIGGGHTS integrates with velocity Verlet (fix nve/sphere); a set-up that continues the last
   // run evaluates as its step did (fix_lubricated_step_velocity.h).
   bool stepping(bool continued) const { return !update->setupflag || continued; }
-  lubricated::Evaluation evaluation(bool continued) const
+  lubricated::EvaluationKind evaluation_kind(bool continued) const
   {
-    return lubricated::evaluation_of(update->setupflag && !continued, false);
+    return lubricated::evaluation_kind(update->dt, update->setupflag != 0, continued, false);
   }
+  lubricated::Evaluation evaluation(bool continued) const { return evaluation_kind(continued).when; }
 
   // The partner atom of a pair, -1 at a wall.
   int partner(const SurfacesCloseData &scdata) const { return is_wall_ ? -1 : scdata.j; }
@@ -645,36 +387,10 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
   }
 
   // k and c depend on the time step (N_c dt); rebuild whenever it changes.
-  void build_models()
-  {
-    dt_ = update->dt;
-    models_ = lubricated::liggghts::build_models(coefficients_, ntypes_, is_wall_, dt_, message_);
-    if (!message_.empty()) fail(message_);
-    // The films' largest reach for bound_idle_pairs: 0.75 dx with a grid, else eps_al R.
-    film_eps_max_ = film_reach_max_ = 0.0;
-    for (const lubricated::NormalModel &m : models_) {
-      const lubricated::Lubrication &film = m.lubrication;
-      if (!film.active()) continue;
-      if (film.grid_spacing > 0.0)
-        film_reach_max_ = std::max(film_reach_max_, film.reach(0.0));
-      else
-        film_eps_max_ = std::max(film_eps_max_, film.eps_activation);
-    }
-    if (budget_ && !is_wall_) {    // a new time step: new network loads
-      std::vector<double> normal, bound;
-      network_loads(normal, bound);
-      budget_->set_network(ntypes_, normal, bound, coefficients_);
-    }
-  }
+  void build_models();
 
   // A contact whose previous step was not evaluated: its entry is integrated approximately.
-  void missed_approach(double u_n)
-  {
-    if (warned_) return;
-    warned_ = true;
-    message_ = lubricated::liggghts::missed_approach_warning(u_n, dt_, neighbor->contactDistanceFactor);
-    error->warning(FLERR, message_.c_str());
-  }
+  void missed_approach(double u_n);
 
   bool is_wall_;
   LAMMPS_NS::PairGran *pair_;

@@ -105,6 +105,45 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
            !pg->storeContactForcesStress() && !pg->store_sum_normal_force();
   }
 
+  // What fill_overlap() reads of the atoms' masses: LIGGGHTS's rigid-body masses (nullptr: none),
+  // its freeze group, and whether atoms are spheres (then the unit normal is given).
+  struct PassMasses {
+    const double *rmass, *rigid_mass;
+    const int *mask;
+    int freeze_bit;
+    bool sphere;
+  };
+
+  // The overlap's data LIGGGHTS's pass gives surfacesIntersect(): the distance, the unit normal,
+  // the masses (a rigid body's for its atoms; the partner's alone against a frozen atom) and the
+  // spins. sidata holds the pair's delta and rsq.
+  __attribute__((always_inline)) static void fill_overlap(LIGGGHTS::ContactModels::SurfacesIntersectData &sidata,
+                                                          const PassMasses &masses, double *omega, int i, int j,
+                                                          std::size_t j3)
+  {
+    const double r = std::sqrt(sidata.rsq), rinv = 1.0 / r;
+    double mi = masses.rmass[i], mj = masses.rmass[j];
+    if (masses.rigid_mass) {
+      if (masses.rigid_mass[i] > 0.0) mi = masses.rigid_mass[i];
+      if (masses.rigid_mass[j] > 0.0) mj = masses.rigid_mass[j];
+    }
+    double meff = mi * mj / (mi + mj);
+    if (masses.mask[i] & masses.freeze_bit) meff = mj;
+    if (masses.mask[j] & masses.freeze_bit) meff = mi;
+    sidata.r = r;
+    sidata.rinv = rinv;
+    sidata.meff = meff;
+    sidata.mi = mi;
+    sidata.mj = mj;
+    if (masses.sphere) {
+      sidata.en[0] = sidata.delta[0] * rinv;
+      sidata.en[1] = sidata.delta[1] * rinv;
+      sidata.en[2] = sidata.delta[2] * rinv;
+    }
+    sidata.omega_i = omega + 3 * i;
+    sidata.omega_j = omega + j3;
+  }
+
   // LIGGGHTS's pass (pair_gran_base.h) without the options lean_pass_applies() excludes.
   void lean_pass(LAMMPS_NS::PairGran *pg)
   {
@@ -120,9 +159,9 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
     const LAMMPS_NS::NeighList *list = pg->list;
     int **first_flags = pg->listgranhistory ? pg->listgranhistory->firstneigh : nullptr;
     double **first_history = pg->listgranhistory ? pg->listgranhistory->firstdouble : nullptr;
-    const int dnum = pg->dnum(), freeze_bit = pg->freeze_group_bit();
-    const bool rigid = pg->fr_pair();
-    const double *rigid_mass = rigid ? pg->mr_pair() : nullptr;
+    const int dnum = pg->dnum();
+    const PassMasses masses{rmass, pg->fr_pair() ? pg->mr_pair() : nullptr, mask, pg->freeze_group_bit(),
+                            atom->sphere_flag != 0};
     const double factor = lmp_->neighbor->contactDistanceFactor;
 
     SurfacesIntersectData sidata;    // zeroed as LIGGGHTS's pass zeroes its own
@@ -175,27 +214,7 @@ template <class CM> class PairPass final : public LIGGGHTS::PairStyles::Granular
         i_forces.reset();
         j_forces.reset();
         if (rsq < radsum * radsum && model_.checkSurfaceIntersect(sidata)) {
-          const double r = std::sqrt(rsq), rinv = 1.0 / r;
-          double mi = rmass[i], mj = rmass[j];
-          if (rigid) {
-            if (rigid_mass[i] > 0.0) mi = rigid_mass[i];
-            if (rigid_mass[j] > 0.0) mj = rigid_mass[j];
-          }
-          double meff = mi * mj / (mi + mj);
-          if (mask[i] & freeze_bit) meff = mj;
-          if (mask[j] & freeze_bit) meff = mi;
-          sidata.r = r;
-          sidata.rinv = rinv;
-          sidata.meff = meff;
-          sidata.mi = mi;
-          sidata.mj = mj;
-          if (atom->sphere_flag) {
-            sidata.en[0] = delx * rinv;
-            sidata.en[1] = dely * rinv;
-            sidata.en[2] = delz * rinv;
-          }
-          sidata.omega_i = omega + 3 * i;
-          sidata.omega_j = omega + j3;
+          fill_overlap(sidata, masses, omega, i, j, j3);
           model_.surfacesIntersect(sidata, i_forces, j_forces);
           model_.endSurfacesIntersect(sidata, nullptr, i_forces, j_forces);
           sidata.has_force_update = true;

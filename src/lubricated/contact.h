@@ -32,6 +32,20 @@ inline ContactModel make_contact_model(const Coefficients &c, Partner partner, d
   return m;
 }
 
+// The kind of this evaluation and the time its films act on the velocities (film_kick_time), as
+// every engine works them out: setup, a run's set-up evaluation (the engine's set-up flag);
+// continued, a set-up that continues the last run's step, evaluated as that step was (the step
+// velocities the engine kept); midpoint_integrator, fix nve/sphere/midpoint integrates.
+struct EvaluationKind {
+  Evaluation when;
+  double kick_time;
+};
+inline EvaluationKind evaluation_kind(double dt, bool setup, bool continued, bool midpoint_integrator)
+{
+  const Evaluation when = continued ? Evaluation::step : evaluation_of(setup, midpoint_integrator);
+  return {when, film_kick_time(dt, when != Evaluation::step, when == Evaluation::midpoint_start)};
+}
+
 // The contact as the engine sees it this step.
 struct ContactPoint {
   // Normal (normal_model.h): gap, the normal velocity over the last step, m_e, the film's R.
@@ -115,9 +129,8 @@ contact_forces(const ContactModel &m, const ContactPoint &p, HistorySlot &histor
   const TangentialModel &tm = m.tangential;
   constexpr bool wall = PARTNER == Partner::wall;
   // Slip of the surfaces (tangential.h): (v_i - v_j) - (R_i omega_i + R_j omega_j) x n.
-  const Vec3 lever =
-      wall ? scaled(p.omega_i, p.radius_i) : plus(scaled(p.omega_i, p.radius_i), scaled(p.omega_j, p.radius_j));
-  const Vec3 s = tangential_part(minus(p.dv, cross(lever, p.n)), p.n);
+  const Vec3 lever = wall ? scaled(p.omega_i, p.radius_i) : contact_lever(p.omega_i, p.radius_i, p.omega_j, p.radius_j);
+  const Vec3 s = surface_slip(p.dv, lever, p.n);
   const double m_t = p.tangential_mass > 0.0 ? p.tangential_mass : tangential_mass_ratio * p.reduced_mass;
 
   Vec3 f;

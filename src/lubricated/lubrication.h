@@ -119,8 +119,7 @@ struct Lubrication {
   // fixed eps_al must exceed eps_1, coefficients.h).
   double activation_for(const FilmRadius &radius) const
   {
-    return grid_spacing > 0.0 ? std::max(grid_activation * grid_spacing * radius.inverse, eps_saturation)
-                              : eps_activation;
+    return grid_spacing > 0.0 ? activation_inline_eps<true>(radius) : activation_inline_eps<false>(radius);
   }
   double activation_for(double radius) const { return activation_for(FilmRadius(radius)); }
 
@@ -172,9 +171,14 @@ struct Lubrication {
   template <bool GRID> __attribute__((always_inline)) Activation activation_inline(const FilmRadius &radius) const
   {
     if (!GRID) return {eps_activation, lambda_activation, integral_activation};
-    const double eps_al = std::max(grid_activation * grid_spacing * radius.inverse, eps_saturation);
+    const double eps_al = activation_inline_eps<GRID>(radius);
     const double l = log_inline(eps_al);
     return {eps_al, expansion.lambda(eps_al, l), expansion.integral(eps_al, l)};
+  }
+  // eps_al alone, as activation_inline's (no logarithm).
+  template <bool GRID> __attribute__((always_inline)) double activation_inline_eps(const FilmRadius &radius) const
+  {
+    return GRID ? std::max(grid_activation * grid_spacing * radius.inverse, eps_saturation) : eps_activation;
   }
   double film_integral(double eps, double radius) const { return film_integral(eps, activation(FilmRadius(radius))); }
 
@@ -194,7 +198,7 @@ struct Lubrication {
                                                                                          double &lambda_al) const
   {
     const double reach = grid_activation * grid_spacing;
-    const double eps_al = GRID ? std::max(reach * radius.inverse, eps_saturation) : eps_activation;
+    const double eps_al = activation_inline_eps<GRID>(radius);
     const double f_a = std::min(std::max(after, eps_saturation), eps_al);
     const double f_b = std::min(std::max(before, eps_saturation), eps_al);
     double l_a, l_b;

@@ -61,27 +61,27 @@ inline double tangential_mass_of_sides(double inverse_i, double mass_i, double i
 struct Vec3 {
   double x = 0.0, y = 0.0, z = 0.0;
 };
-inline double dot(const Vec3 &a, const Vec3 &b)
+__attribute__((always_inline)) inline double dot(const Vec3 &a, const Vec3 &b)
 {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
-inline Vec3 cross(const Vec3 &a, const Vec3 &b)
+__attribute__((always_inline)) inline Vec3 cross(const Vec3 &a, const Vec3 &b)
 {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline Vec3 scaled(const Vec3 &a, double s)
+__attribute__((always_inline)) inline Vec3 scaled(const Vec3 &a, double s)
 {
   return {a.x * s, a.y * s, a.z * s};
 }
-inline Vec3 minus(const Vec3 &a, const Vec3 &b)
+__attribute__((always_inline)) inline Vec3 minus(const Vec3 &a, const Vec3 &b)
 {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
-inline Vec3 plus(const Vec3 &a, const Vec3 &b)
+__attribute__((always_inline)) inline Vec3 plus(const Vec3 &a, const Vec3 &b)
 {
   return {a.x + b.x, a.y + b.y, a.z + b.z};
 }
-inline Vec3 tangential_part(const Vec3 &a, const Vec3 &n)
+__attribute__((always_inline)) inline Vec3 tangential_part(const Vec3 &a, const Vec3 &n)
 {
   return minus(a, scaled(n, dot(a, n)));
 }
@@ -130,38 +130,56 @@ inline double first_contact_fraction(double gap, double u_n, double dt)
   return std::min(1.0, std::max(0.0, gap / (u_n * dt)));
 }
 
+// The slip of the surfaces, s = (v_i - v_j) - lever x n with its normal part removed; lever =
+// R_i omega_i + R_j omega_j (contact_lever; a wall: R_i omega_i).
+__attribute__((always_inline)) inline Vec3 surface_slip(const Vec3 &dv, const Vec3 &lever, const Vec3 &n)
+{
+  return tangential_part(minus(dv, cross(lever, n)), n);
+}
+// (Each radius multiplies first: in the vectorised loops GCC then fuses the same products into
+// multiply-adds as the loops' own code always did, which keeps their results.)
+__attribute__((always_inline)) inline Vec3 contact_lever(const Vec3 &omega_i, double radius_i, const Vec3 &omega_j,
+                                                         double radius_j)
+{
+  return {radius_i * omega_i.x + radius_j * omega_j.x, radius_i * omega_i.y + radius_j * omega_j.y,
+          radius_i * omega_i.z + radius_j * omega_j.z};
+}
+
+// The elongation kept in the tangent plane with its length (the pair may have rotated): its
+// normal part r removed and the rest rescaled by sqrt(1 / (1 - x)), x = r^2 / |delta|^2; for the
+// small x of one step's rotation the series 1 + x/2 + 3x^2/8 (error 5x^3/16 < 1e-13) saves two
+// square roots per contact and step. Unscaled where nothing tangential is left (x >= 1).
+// Selects, not branches: the vectorised friction loop inlines it too.
+__attribute__((always_inline)) inline Vec3 elongation_in_tangent_plane(const Vec3 &delta, const Vec3 &n)
+{
+  const double normal_part = dot(delta, n);
+  const double length_sq = dot(delta, delta);
+  const double x = normal_part != 0.0 ? normal_part * normal_part / length_sq : 0.0;
+  const double stretch = x < 1e-4 ? 1.0 + x * (0.5 + 0.375 * x) : x < 1.0 ? std::sqrt(1.0 / (1.0 - x)) : 1.0;
+  return scaled(minus(delta, scaled(n, normal_part)), stretch);
+}
+
 // Tangential contact force on i for a contact in overlap. delta (history, in: elongation at
 // the end of the last step; out: now) is rotated into the current tangent plane before use.
 // first_fraction: for a contact that opened during the last step, the part of that step spent
-// in overlap (the elongation starts from zero there); 1 for a sustained contact.
-inline Vec3 tangential_contact_force(const TangentialModel &m, Vec3 &delta, const Vec3 &n, const Vec3 &s,
-                                     double tangential_mass, double normal_force, double first_fraction = 1.0)
+// in overlap (the elongation starts from zero there); 1 for a sustained contact. Coulomb: beyond
+// mu |F_n| the contact slides and the spring holds what the capped force implies. The scalar
+// contact (contact_forces) and the vectorised friction loop both take this one form.
+__attribute__((always_inline)) inline Vec3 tangential_contact_force(const TangentialModel &m, Vec3 &delta,
+                                                                    const Vec3 &n, const Vec3 &s,
+                                                                    double tangential_mass, double normal_force,
+                                                                    double first_fraction = 1.0)
 {
-  // Keep the elongation in the tangent plane, with its length (the pair may have rotated):
-  // remove the normal part r and rescale by sqrt(1 / (1 - x)), x = r^2 / |delta|^2; for the
-  // small x of one step's rotation the series 1 + x/2 + 3x^2/8 (error 5x^3/16 < 1e-13) saves
-  // two square roots per contact and step.
-  const double normal_part = dot(delta, n);
-  if (normal_part != 0.0) {
-    const double length_sq = dot(delta, delta);
-    delta = minus(delta, scaled(n, normal_part));
-    const double x = normal_part * normal_part / length_sq;
-    if (x < 1e-4)
-      delta = scaled(delta, 1.0 + x * (0.5 + 0.375 * x));
-    else if (x < 1.0)
-      delta = scaled(delta, std::sqrt(1.0 / (1.0 - x)));
-  }
-  delta = plus(delta, scaled(s, first_fraction * m.dt));
-
-  Vec3 f = scaled(plus(scaled(delta, m.stiffness_step), scaled(s, m.damping_step)), -tangential_mass);
+  delta = plus(elongation_in_tangent_plane(delta, n), scaled(s, first_fraction * m.dt));
+  const Vec3 f = scaled(plus(scaled(delta, m.stiffness_step), scaled(s, m.damping_step)), -tangential_mass);
   const double limit = m.friction * std::fabs(normal_force);
   const double f2 = dot(f, f);
-  if (f2 > limit * limit) {
-    f = scaled(f, limit / std::sqrt(f2));
-    // Sliding: the spring holds what the capped force implies.
-    delta = scaled(plus(scaled(f, 1.0 / tangential_mass), scaled(s, m.damping_step)), -1.0 / m.stiffness_step);
-  }
-  return f;
+  const bool slides = f2 > limit * limit;
+  const Vec3 capped = scaled(f, slides ? limit / std::sqrt(f2) : 1.0);
+  const double inverse_mass = 1.0 / tangential_mass, inverse_stiffness = -1.0 / m.stiffness_step;
+  const Vec3 held = scaled(plus(scaled(capped, inverse_mass), scaled(s, m.damping_step)), inverse_stiffness);
+  delta = {slides ? held.x : delta.x, slides ? held.y : delta.y, slides ? held.z : delta.z};
+  return capped;
 }
 
 // Rolling resistance (constant-torque model, Ai et al., Powder Technol. 206, 269, 2011,
@@ -187,35 +205,55 @@ inline Vec3 rolling_torque(const TangentialModel &m, const Vec3 &n, const Vec3 &
 // equal spheres. Activated at eps_al (continuous there), saturated below eps_1, cut below eps_2,
 // like the normal film. The damper is integrated exactly over the step (factor 1 - exp(-x)),
 // so it never reverses s, however viscous the fluid or long the step.
+//
+// shear_film_damping: the damping d [mass/time] (force -d s) over a step from its logarithm log_ratio =
+// ln(eps_al / max(eps, eps_saturation)): rate x = in_film 2 pi mu R_e log_ratio dt / m_t and d =
+// m_t (1 - exp(-x)) / dt. in_film: 1 inside the film, 0 outside. BRANCH_FREE: 1 - exp(-x) by
+// one_minus_exp_neg_inline (for loops the compiler vectorises; the same to a few units in the
+// last place), else to rounding.
+template <bool BRANCH_FREE>
+__attribute__((always_inline)) inline double shear_film_damping(const TangentialModel &m, double in_film,
+                                                                double reduced_radius, double log_ratio,
+                                                                double tangential_mass)
+{
+  const double rate = in_film * m.two_pi_mu * reduced_radius * log_ratio * m.dt / tangential_mass;
+  const double factor = BRANCH_FREE   ? one_minus_exp_neg_inline(rate)
+                        : rate < 1e-6 ? rate * (1.0 - 0.5 * rate)
+                                      : -std::expm1(-rate);
+  return factor * tangential_mass / m.dt;
+}
+
+// Whether a normalised gap eps lies in the shear film: between eps_release and eps_al.
+__attribute__((always_inline)) inline bool in_shear_film(double eps, double eps_al, double eps_release)
+{
+  return (eps < eps_al) & (eps > eps_release);
+}
+
 inline Vec3 shear_film_force(const TangentialModel &m, const Vec3 &s, double eps, double eps_al, double eps_saturation,
                              double eps_release, double reduced_radius, double tangential_mass)
 {
-  if (!(eps < eps_al && eps > eps_release)) return {};
-  const double coefficient = m.two_pi_mu * reduced_radius * std::log(eps_al / std::max(eps, eps_saturation));
-  const double rate = coefficient * m.dt / tangential_mass;
-  const double factor = rate < 1e-6 ? rate * (1.0 - 0.5 * rate) : -std::expm1(-rate);
-  return scaled(s, -factor * tangential_mass / m.dt);
+  if (!in_shear_film(eps, eps_al, eps_release)) return {};
+  const double log_ratio = std::log(eps_al / std::max(eps, eps_saturation));
+  return scaled(s, -shear_film_damping<false>(m, 1.0, reduced_radius, log_ratio, tangential_mass));
 }
 
 // shear_film_force() for a pair apart by more than eps_release R, without branches or calls, for
-// loops the compiler vectorises: the damping d of the force -d s [mass/time], the same to a few
-// units in the last place (log_inline, one_minus_exp_neg_inline); 0 where the tangential mass is
-// 0 (two immovable atoms). log_ratio: ln(eps_al / max(eps, eps_saturation)) where the caller has
-// it (the normal film's logarithms give it, Lubrication::film_integral_change_inline).
+// loops the compiler vectorises: the damping d of the force -d s [mass/time] (shear_film_damping's
+// branch-free form); 0 where the tangential mass is 0 (two immovable atoms). log_ratio:
+// ln(eps_al / max(eps, eps_saturation)) where the caller has it (the normal film's logarithms give
+// it, Lubrication::film_integral_change_inline).
 __attribute__((always_inline)) inline double shear_film_damping_of_log(const TangentialModel &m, double eps,
                                                                        double eps_al, double eps_release,
                                                                        double log_ratio, double reduced_radius,
                                                                        double tangential_mass)
 {
   // Every operation done for every pair, the result selected (no branch for the compiler to
-  // keep): outside the film the coefficient is 0; a zero mass is replaced by 1 and its damping
+  // keep): outside the film the rate is 0; a zero mass is replaced by 1 and its damping
   // multiplied by 0.
-  const double in_film = (eps < eps_al) & (eps > eps_release) ? 1.0 : 0.0;
+  const double in_film = in_shear_film(eps, eps_al, eps_release) ? 1.0 : 0.0;
   const double movable = tangential_mass > 0.0 ? 1.0 : 0.0;
   const double mass = tangential_mass + (1.0 - movable);
-  const double coefficient = in_film * m.two_pi_mu * reduced_radius * log_ratio;
-  const double rate = coefficient * m.dt / mass;
-  return movable * one_minus_exp_neg_inline(rate) * mass / m.dt;
+  return movable * shear_film_damping<true>(m, in_film, reduced_radius, log_ratio, mass);
 }
 __attribute__((always_inline)) inline double shear_film_damping_apart(const TangentialModel &m, double eps,
                                                                       double eps_al, double eps_saturation,

@@ -13,17 +13,14 @@
 #include "lubricated/contact.h"
 #include "lubricated/film_budget.h"
 #include "lubricated/normal_model.h"
+#include "lubricated/pair_geometry.h"
 
 namespace LAMMPS_NS {
 namespace vector_pairs {
 
-// Per-atom data: x and v 3 per atom, contiguous (LAMMPS's x[0], v[0]). inverse_mass: the
-// inverse contact masses (contact_mass.h) where a run has immovable atoms or rigid bodies,
-// else nullptr (m_e from rmass). omega (3 per atom): for the shear film only.
-struct Atoms {
-  const double *x, *v, *radius, *rmass, *inverse_mass;
-  const double *omega = nullptr;
-};
+// Per-atom data (lubricated/pair_geometry.h): x, v, radius, rmass, inverse_mass (nullptr: m_e
+// from rmass), omega (the slip: friction and shear film loops only).
+using Atoms = lubricated::PairAtoms;
 
 // The pairs (pair_i[c], pair_j[c]), c < n, all of model `model` (exact integration, a step).
 // force: the whole force on i (force.x[c], force.y[c], force.z[c]), on j the opposite; film[c]
