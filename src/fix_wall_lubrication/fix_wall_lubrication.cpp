@@ -16,6 +16,7 @@
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/check_setup.h"
 #include "lubricated/film_budget.h"
+#include "lubricated/film_cavitation.h"
 #include "pair_lubricated_springdashpot/pair_lubricated_springdashpot.h"
 
 #include "atom.h"
@@ -209,16 +210,21 @@ void FixWallLubrication::compute_walls(bool defer_films)
                       : lub::contact_forces<false, lub::Partner::wall>(model, p, slot, when);
     const lub::NormalForce &fn = c.normal;
     if (h) h[3] = slot.touched;
-    double force = fn.total();
+    const lub::Lubrication &film_law = model.normal.lubrication;
+    const double film_n =
+        fn.lubrication + lub::cavitation_relief(film_law.six_pi_mu, film_radius,
+                                                std::max(at.gap, film_law.eps_saturation * film_radius), u_n,
+                                                cavitation, fn.lubrication);
+    double force = fn.contact + film_n;
     double share = 0.0;
     std::size_t film = 0;    // the atom's entry among the deferred films
     if (defer_films) {       // applied in post_force, within the atom's film budget
       force = fn.contact;
       film = film_entry(i);
-      film_force[3 * film] += fn.lubrication * at.n.x;
-      film_force[3 * film + 1] += fn.lubrication * at.n.y;
-      film_force[3 * film + 2] += fn.lubrication * at.n.z;
-      share = lub::film_share(fn.lubrication, mass, u_n, kick_time);
+      film_force[3 * film] += film_n * at.n.x;
+      film_force[3 * film + 1] += film_n * at.n.y;
+      film_force[3 * film + 2] += film_n * at.n.z;
+      share = lub::film_share(film_n, mass, u_n, kick_time);
       if (!shear_pending) film_load[film] += share;
     }
     const double fn_xyz[3] = {force * at.n.x, force * at.n.y, force * at.n.z};

@@ -56,6 +56,7 @@ class FixWallLubrication : public FixLubricatedWall {
   // rebased when the time step changes; in the restart file, so that a restarted run moves on.
   double elapsed = 0.0, motion_dt = 0.0;
   bigint step_origin = 0;
+  double cavitation = -1.0;    // tension limit dp_c of a separating film (< 0: none; film_cavitation.h)
   double wall_time() const;
   void rebase_clock();
   std::string describe_walls() const;
