@@ -28,13 +28,12 @@ namespace lubricated {
 // six_pi_mu: 6 pi mu_f; radius: the film's R; gap: the film's gap (held at eps_1 R below it, as
 // the film is); u_n: the separation speed (> 0 apart); dp_c: the tension limit (< 0: none, the film
 // as it is; 0: the film ruptures at the ambient pressure and holds no Reynolds tension).
-inline double cavitation_relief(double six_pi_mu, double radius, double gap, double u_n, double dp_c,
-                                double film_force)
+inline double cavitation_relief(double six_pi_mu, double radius, double gap, double u_n, double dp_c, double film_force)
 {
   if (!(dp_c >= 0.0) || !(u_n > 0.0) || !(film_force < 0.0) || !(gap > 0.0)) return 0.0;
   constexpr double two_pi = 6.283185307179586;
   const double tension = six_pi_mu * radius * radius * u_n / gap;
-  if (dp_c == 0.0) return std::min(tension, -film_force);    // a film that ruptures at once
+  if (dp_c == 0.0) return std::min(tension, -film_force);                      // a film that ruptures at once
   const double h_c = std::sqrt(six_pi_mu * radius * u_n / (two_pi * dp_c));    // 3 mu R u / dp_c
   if (gap >= h_c) return 0.0;
   const double cavitated = two_pi * radius * dp_c * (2.0 * h_c - gap);

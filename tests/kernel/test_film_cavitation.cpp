@@ -12,7 +12,10 @@ namespace {
 constexpr double pi = 3.141592653589793;
 // The settling sphere at St 27: mu 0.1 Pa s, R 3 mm, leaving the wall at 0.2 m/s.
 constexpr double six_pi_mu = 6.0 * pi * 0.1, radius = 3e-3, u = 0.2;
-double reynolds(double gap) { return six_pi_mu * radius * radius * u / gap; }
+double reynolds(double gap)
+{
+  return six_pi_mu * radius * radius * u / gap;
+}
 }    // namespace
 
 TEST(FilmCavitation, OffLeavesTheFilm)
