@@ -113,9 +113,11 @@ shear-cell: build
 	  -log log.shear_cell -nocite
 
 # A steel sphere settling in silicone oil onto a wall (DEM, activation dem): trajectory CSV + PNG,
-# first rebound against e_d exp(-35/St), and the same with the activation given directly.
+# first rebound against e_d exp(-35/St), and the same with the activation given directly; then
+# the trajectories against Gondret et al. (2002) at St 27 and 152 (compare_experiments.png).
 settling-sphere: build
 	$(PY) examples/settling_sphere/plot_settling_sphere.py --out $(BUILD)/settling_sphere
+	$(PY) examples/settling_sphere/compare_experiments.py --out $(BUILD)/settling_sphere
 
 # A dry and a wet rotating drum (fix wall/lubrication zcylinder shear): the dynamic angle of
 # repose and rotating_drum.png (under a minute).

@@ -103,6 +103,10 @@ class FixWallLubricationBase : public Fix, public FilmBudgetParticipant, public 
   // torque, energy, the deferred films, the sustained contacts and the friction history.
   void apply_contact(int i, double mass, const WallContact &contact);
   void apply_contact_of_mass(int i, double mass, const WallContact &contact);
+  // The tension limit dp_c of a separating film (lubricated/film_cavitation.h; < 0: none, the
+  // film as printed); the plane and cylinder walls' keyword cavitation sets it.
+  double cavitation = -1.0;
+  void relieve_cavitation(lubricated::ContactForces &forces, const WallContact &contact) const;
   // A force and torque on atom i in the fix's vector sums (the energy is sums[0]).
   virtual void tally(int i, const lubricated::Vec3 &force, const lubricated::Vec3 &torque) = 0;
   // How a contact's tangential force joins its normal force: the plane and cylinder walls add

@@ -8,10 +8,13 @@
 
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/film_budget.h"
+#include "lubricated/film_cavitation.h"
 
 #include "atom.h"
 #include "neighbor.h"
 #include "update.h"
+
+#include <algorithm>
 
 using namespace LAMMPS_NS;
 namespace lub = lubricated;
@@ -68,7 +71,8 @@ void FixWallLubricationBase::apply_contact(int i, double mass, const WallContact
 void FixWallLubricationBase::apply_contact_of_mass(int i, double mass, const WallContact &contact)
 {
   record_sustained(i, contact.gap, contact.u_n, contact.n);
-  const lub::ContactForces forces = contact_forces_of(i, mass, contact);
+  lub::ContactForces forces = contact_forces_of(i, mass, contact);
+  if (cavitation >= 0.0) relieve_cavitation(forces, contact);
   const double normal = defer_contact_films(i, mass, contact, forces);
   local_sums[0] += forces.normal.energy;
   add_contact_force(i, lub::scaled(contact.n, normal), model.tangential.active() ? &forces : nullptr);
@@ -148,4 +152,15 @@ void FixWallLubricationBase::add_contact_force(int i, const lub::Vec3 &normal, c
   const lub::Vec3 force = lub::plus(normal, tangential->tangential);
   fi[0] += force.x, fi[1] += force.y, fi[2] += force.z;
   tally(i, force, torque);
+}
+
+// A separating film holds no more tension than the liquid can before it cavitates: the part of
+// the film force beyond it is removed (film_cavitation.h); the film's gap is held at eps_1 R below.
+void FixWallLubricationBase::relieve_cavitation(lub::ContactForces &forces, const WallContact &contact) const
+{
+  const lub::Lubrication &film_law = model.normal.lubrication;
+  const double radius = contact.film.value;
+  const double gap = std::max(contact.gap, film_law.eps_saturation * radius);
+  forces.normal.lubrication +=
+      lub::cavitation_relief(film_law.six_pi_mu, radius, gap, contact.u_n, cavitation, forces.normal.lubrication);
 }

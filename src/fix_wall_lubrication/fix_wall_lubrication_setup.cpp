@@ -76,7 +76,7 @@ void FixWallLubrication::parse_motion(int narg, char **arg, int iarg)
   auto needs = [&](const char *keyword, int count) {
     if (iarg + count >= narg) error->all(FLERR, "{}: {} needs {} values", STYLE, keyword, count);
   };
-  bool seen_translate = false, seen_side = false;
+  bool seen_translate = false, seen_side = false, seen_cavitation = false;
   while (iarg < narg) {
     const std::string key = arg[iarg];
     if (key == "translate") {
@@ -119,8 +119,19 @@ void FixWallLubrication::parse_motion(int narg, char **arg, int iarg)
         error->all(FLERR, "{}: side = {} is unknown (allowed: in, out)", STYLE, value);
       walls[0].side = value == "in" ? -1 : 1;
       iarg += 2;
+    } else if (key == "cavitation") {
+      needs("cavitation", 1);
+      if (seen_cavitation) error->all(FLERR, "{}: cavitation given twice", STYLE);
+      seen_cavitation = true;
+      const bool none = strcmp(arg[iarg + 1], "none") == 0;    // the film as it is (the default)
+      cavitation = none ? -1.0 : utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!none && !(cavitation >= 0.0 && std::isfinite(cavitation)))
+        error->all(FLERR, "{}: cavitation dp_c = {} is out of range (allowed: none, or 0 <= dp_c, finite)", STYLE,
+                   arg[iarg + 1]);
+      iarg += 2;
     } else {
-      error->all(FLERR, "{}: unknown keyword '{}' after the wall arguments (allowed: translate, wiggle, shear{})",
+      error->all(FLERR,
+                 "{}: unknown keyword '{}' after the wall arguments (allowed: translate, wiggle, shear, cavitation{})",
                  STYLE, key, cylinder ? ", side" : "");
     }
   }
