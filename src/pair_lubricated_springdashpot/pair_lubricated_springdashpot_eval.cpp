@@ -306,7 +306,8 @@ PairLubricatedSpringDashpot::PairLoop PairLubricatedSpringDashpot::pair_loop(dou
   loop.models = models.data(), loop.stride = ntypes_alloc + 1;
   loop.nlocal = atom->nlocal, loop.newton_pair = force->newton_pair;
   loop.dt = update->dt;
-  const lub::EvaluationKind kind = lub::evaluation_kind(loop.dt, update->setupflag != 0, continued, midpoint != nullptr);
+  const lub::EvaluationKind kind =
+      lub::evaluation_kind(loop.dt, update->setupflag != 0, continued, midpoint != nullptr);
   loop.when = kind.when, loop.kick_time = kind.kick_time;
   loop.budget = wet && budget.active();
   loop.steps = !update->setupflag;
