@@ -63,7 +63,7 @@ class FixWallLubricationBase : public Fix, public FilmBudgetParticipant, public 
   lubricated::ContactModel model;                    // derived from coeffs and dt
   class FixNVESphereMidpoint *midpoint = nullptr;    // the paper's integrator, if in use
   class FixStepVelocity *step_velocity = nullptr;    // the last step's velocities for a set-up
-  const class FilmBudget *pair_budget = nullptr;    // the lubricated pair style's, if there is one
+  const class FilmBudget *pair_budget = nullptr;     // the lubricated pair style's, if there is one
 
   // One contact of an atom with a wall, as a wall style finds it.
   struct WallContact {

@@ -11,6 +11,7 @@
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/check_setup.h"
+#include "plugin/run_steps.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -74,7 +75,7 @@ PairLubricatedSpringDashpot::TypePairNeeds PairLubricatedSpringDashpot::settle_c
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++) {
       if (!setflag[i][j]) continue;
-      lub::settle_contact_time(coeffs[index(i, j)], update->dt);
+      lub::settle_contact_time(coeffs[index(i, j)], update->dt, run_has_steps(update));
       coeffs[index(j, i)] = coeffs[index(i, j)];
       const lub::Coefficients &c = coeffs[index(i, j)];
       const lub::SetupCheck check = lub::check_setup(c, lub::Partner::particle, update->dt);
