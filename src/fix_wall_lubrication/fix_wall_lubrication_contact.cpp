@@ -8,10 +8,13 @@
 
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/film_budget.h"
+#include "lubricated/overlap_check.h"
 
 #include "atom.h"
+#include "error.h"
 #include "neighbor.h"
 #include "update.h"
+#include "utils.h"
 
 using namespace LAMMPS_NS;
 namespace lub = lubricated;
@@ -53,6 +56,7 @@ void FixWallLubricationBase::begin_evaluation(bool defer_films)
 
 void FixWallLubricationBase::apply_contact(int i, double mass, const WallContact &contact)
 {
+  if (contact.gap < -lub::overlap_warning_fraction * atom->radius[i]) check_overlap(i, contact.gap, false);
   record_sustained(i, contact.gap, contact.u_n, contact.n);
   const lub::ContactForces forces = contact_forces_of(i, mass, contact);
   const double normal = defer_contact_films(i, mass, contact, forces);
@@ -131,4 +135,20 @@ void FixWallLubricationBase::add_contact_force(int i, const lub::Vec3 &normal, c
   const lub::Vec3 force = lub::plus(normal, tangential->tangential);
   fi[0] += force.x, fi[1] += force.y, fi[2] += force.z;
   tally(i, force, torque);
+}
+
+// Where the overlap passes a limit (apply_contact), or the centre went behind the wall: the
+// ERROR on this rank (the run stops), the WARNING once per run.
+__attribute__((noinline)) void FixWallLubricationBase::check_overlap(int i, double gap, bool through)
+{
+  const double r = atom->radius[i];
+  const double fraction = lub::overlap_fraction(gap, r);
+  const lub::OverlapLevel level = through ? lub::OverlapLevel::error : lub::overlap_level(fraction);
+  if (level == lub::OverlapLevel::none || (level == lub::OverlapLevel::warning && overlap_warned)) return;
+  const std::string who =
+      fmt::format("atom {} (type {}) and the wall of fix {} ({})", atom->tag[i], atom->type[i], id, style);
+  const std::string text = lub::overlap_message(who, gap, r, fraction, coeffs, update->dt, through, true);
+  if (level == lub::OverlapLevel::error) error->one(FLERR, "{}", text);
+  overlap_warned = true;
+  error->warning(FLERR, "{}", text);
 }

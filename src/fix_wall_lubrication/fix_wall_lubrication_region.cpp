@@ -190,12 +190,16 @@ void FixWallLubricationRegion::find_contacts()
 void FixWallLubricationRegion::contacts_of_atom(int i, double mass)
 {
   const double *xi = atom->x[i];
-  // A centre outside the region is left alone (as fix wall/gran/region).
+  const double *vi = midpoint && model.normal.exact ? midpoint->step_velocity(i) : pass.v[i];
+  // A centre outside the region is left alone (as fix wall/gran/region); one that was inside a
+  // step ago went through the wall (the overlap check).
   if (!region->match(xi[0], xi[1], xi[2])) {
     if (history) release_other_slots(i, nullptr, 0);
+    const double dt = update->dt;
+    if (!update->setupflag && region->match(xi[0] - vi[0] * dt, xi[1] - vi[1] * dt, xi[2] - vi[2] * dt))
+      check_overlap(i, -atom->radius[i], true);    // d >= R
     return;
   }
-  const double *vi = midpoint && model.normal.exact ? midpoint->step_velocity(i) : pass.v[i];
   const int nc = faces_near(i, vi);
   for (int ic = 0; ic < nc; ic++)
     face_contact(i, mass, ic, vi);

@@ -11,6 +11,7 @@
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/check_setup.h"
+#include "lubricated/overlap_check.h"
 #include "plugin/run_steps.h"
 
 #include "atom.h"
@@ -38,6 +39,7 @@ void PairLubricatedSpringDashpot::init_style()
   check_atom_style();
   network.start_run();    // set_loads (init_one) turns it on
   const TypePairNeeds needs = settle_coefficients();
+  overlap_warned = false, overlap_depth = lub::overlap_warning_fraction;
   keep_contact_history(needs.friction);
   if (comm->me == 0)
     for (const auto &msg : needs.advice)
