@@ -8,6 +8,7 @@
 
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/film_budget.h"
+#include "lubricated/load_sharing.h"
 #include "lubricated/overlap_check.h"
 
 #include "atom.h"
@@ -151,4 +152,25 @@ __attribute__((noinline)) void FixWallLubricationBase::check_overlap(int i, doub
   if (level == lub::OverlapLevel::error) error->one(FLERR, "{}", text);
   overlap_warned = true;
   error->warning(FLERR, "{}", text);
+}
+
+void FixWallLubricationBase::share_gravity_loads(int i, const lub::Vec3 *normal, const double *gap, double *load,
+                                                 int count) const
+{
+  lub::Vec3 touching[lub::max_shared_loads];
+  int index[lub::max_shared_loads], m = 0;
+  for (int k = 0; k < count; k++)
+    if (gap[k] < 0.0 && load[k] > 0.0) {
+      if (m == lub::max_shared_loads) return;    // more faces than a sphere can rest on: as they are
+      index[m] = k, touching[m++] = normal[k];
+    }
+  if (m < 2) return;
+  lub::Vec3 g;
+  for (const Gravity &each : gravity)
+    if (atom->mask[i] & each.groupbit)
+      g = lub::plus(g, {each.acceleration[0], each.acceleration[1], each.acceleration[2]});
+  double shared[lub::max_shared_loads];
+  lub::shared_loads(touching, m, g, shared);
+  for (int k = 0; k < m; k++)
+    load[index[k]] = shared[k];
 }
