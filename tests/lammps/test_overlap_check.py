@@ -6,7 +6,11 @@ of the smaller radius stops the run with an ERROR naming the contact, its t_c an
 keeps it below; beyond 0.1 a WARNING once per run; a centre gone behind a wall after a contact
 stops the run. Normal runs print neither.
 """
+import pathlib
+
 import pytest
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 R_SMALL, R_BIG = 1e-4, 1e-3
 
@@ -123,3 +127,21 @@ def test_a_sphere_through_the_wall_stops_the_run(lmp, region):
     error = error_line(lmp.log)
     assert "went behind the wall after a contact" in error, error
     assert "atom 1 (type 1) and the wall of fix floor" in error, error
+
+
+@pytest.mark.parametrize("name,variables,nprocs", [
+    ("settling_bed/in.settling_bed", {"wet": 0, "steps": 3000}, 1),
+    ("settling_bed/in.settling_bed", {"wet": 1, "steps": 3000}, 1),
+    ("shear_cell/in.shear_cell", {"steps": 1000}, 2),
+])
+def test_the_examples_print_neither(lmp, name, variables, nprocs):
+    """The examples' beds (as test_examples.py runs them): no overlap warning, no error."""
+    lmp((ROOT / "examples" / name).read_text(), nprocs=nprocs, **variables)
+    assert not overlap_warnings(lmp.log)
+
+
+def test_the_rotating_drum_warns_once(lmp):
+    """The drum example's contact is soft on purpose (t_c = 1 ms for 2 mm glass beads, a long step):
+    the beads' first fall onto the drum overlaps a pair by just over 0.1 R: one WARNING, no more."""
+    lmp((ROOT / "examples" / "rotating_drum/in.rotating_drum").read_text(), wet=0, steps=3000)
+    assert len(overlap_warnings(lmp.log)) == 1
