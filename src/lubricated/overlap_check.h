@@ -62,19 +62,22 @@ inline std::string overlap_message(const std::string &who, double gap, double ra
   const double t_below = contact_time_below(t_c, fraction, limit);
   std::string text = who;
   if (through)
-    text += ": the centre went behind the wall after a contact (overlap d = " + number(-gap) + ", radius R = " +
-            number(radius) + ")";
+    text += ": the centre went behind the wall after a contact (overlap d = " + number(-gap) +
+            ", radius R = " + number(radius) + ")";
   else
     text += " overlap by " + number(fraction) + (wall ? " of the sphere's radius" : " of the smaller radius") +
-            " (d = " + number(-gap) +
-            ", R = " + number(radius) + "; " + (level == OverlapLevel::error ? "the limit" : "warned above") +
-            " is " + number(limit) + (level == OverlapLevel::warning ? ", reported once per run)" : ")");
+            " (d = " + number(-gap) + ", R = " + number(radius) + "; " +
+            (level == OverlapLevel::error ? "the limit" : "warned above") + " is " + number(limit) +
+            (level == OverlapLevel::warning ? ", reported once per run)" : ")");
   text += ": the contact is too soft for its load or impact speed (k = m_e (pi^2 + ln^2 e_d) / t_c^2). t_c = " +
           number(t_c) + " (N_c = " + number(t_c / dt) + " steps of " + number(dt) + "); t_c <= " + number(t_below) +
-          " brings this overlap to " + number(limit) + " of the radius (an overlap still growing under a load needs "
-          "less): tcontact " + number(t_below) +
-          (c.t_contact > 0.0 ? "" : ", or ncontact " + number(c.n_contact) + " from a first run at a time step of " +
-                                        number(t_below / c.n_contact) + " or less") +
+          " brings this overlap to " + number(limit) +
+          " of the radius (an overlap still growing under a load needs "
+          "less): tcontact " +
+          number(t_below) +
+          (c.t_contact > 0.0 ? ""
+                             : ", or ncontact " + number(c.n_contact) + " from a first run at a time step of " +
+                                   number(t_below / c.n_contact) + " or less") +
           "; per-type-pair coefficients can give small spheres a shorter t_c (doc/model.rst, \"Overlap check\")";
   return text;
 }

@@ -21,8 +21,8 @@ TEST(OverlapCheck, LevelsAndTheContactTimeThatKeepsItBelow)
   EXPECT_NE(text.find("t_c = 0.0008 (N_c = 8 steps of 0.0001)"), std::string::npos) << text;
   EXPECT_NE(text.find("t_c <= 0.0005 brings this overlap to 0.5 of the radius"), std::string::npos) << text;
   EXPECT_NE(text.find("tcontact 0.0005"), std::string::npos) << text;
-  const std::string wall = overlap_message("atom 1 (type 1) and the wall of fix floor", -0.2e-3, 1e-3, 0.2, c, 1e-4,
-                                           false, true);
+  const std::string wall =
+      overlap_message("atom 1 (type 1) and the wall of fix floor", -0.2e-3, 1e-3, 0.2, c, 1e-4, false, true);
   EXPECT_NE(wall.find("overlap by 0.2 of the sphere's radius"), std::string::npos) << wall;
   EXPECT_NE(wall.find("reported once per run"), std::string::npos) << wall;
   EXPECT_NE(text.find("ncontact 8 from a first run at a time step of 6.25e-05"), std::string::npos) << text;
