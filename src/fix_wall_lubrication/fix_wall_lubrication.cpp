@@ -209,6 +209,7 @@ void FixWallLubrication::near_planes(const Plane *planes, int nplanes)
   const bool film_on = normal.lubrication.active(), grid_film = normal.lubrication.grid_spacing > 0.0;
   const double grid_reach = film_on && grid_film ? normal.lubrication.reach(1.0) : 0.0;
   const double eps_reach = film_on && !grid_film ? normal.lubrication.eps_activation : 0.0;
+  const double dt = update->dt;
   for (int begin = 0; begin < nlocal; begin += chunk) {
     const int n = std::min(chunk, nlocal - begin);
     std::fill(near, near + n, 0.0);
@@ -220,7 +221,10 @@ void FixWallLubrication::near_planes(const Plane *planes, int nplanes)
         const double gap = w.side * (x_all[3 * i + w.axis] - w.position - w.shift) - r;
         const double u_n = w.side * (v_all[vw * i + w.axis] - w.velocity);
         const bool acts = (gap >= -r) & (gap < grid_reach + eps_reach * r + std::fabs(u_n) * step_dt + w.load_reach);
-        near[c] = acts ? 1.0 : near[c];
+        // The centre went behind the plane over the last step, from an overlap (walls_of_atom).
+        const double gap_before = gap - u_n * dt;
+        const bool through = (gap < -r) & (gap_before >= -r) & (gap_before < 0.0);
+        near[c] = acts | through ? 1.0 : near[c];
       }
       if (held)
         for (int c = 0; c < n; c++)
@@ -259,6 +263,9 @@ inline void FixWallLubrication::walls_of_atom(int i, double mass)
     else if (h && h[3] != 0.0)
       for (int m = 0; m < HISTORY_PER_WALL; m++)
         h[m] = 0.0;
+    // Behind the wall now, in overlap with it a step ago: it went through (the overlap check).
+    const double gap_before = at.gap - u_n * update->dt;
+    if (at.gap < -r && gap_before >= -r && gap_before < 0.0 && !update->setupflag) check_overlap(i, at.gap, true);
   }
 }
 

@@ -9,6 +9,7 @@
 #include "lubricated/check_setup.h"
 #include "film_budget/film_budget.h"
 #include "lubricated/film_budget.h"
+#include "plugin/run_steps.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -39,7 +40,7 @@ int FixWallLubricationBase::setmask()
 
 void FixWallLubricationBase::init_model(const char *style, const std::string &what)
 {
-  lub::settle_contact_time(coeffs, update->dt);
+  lub::settle_contact_time(coeffs, update->dt, run_has_steps(update));
   const lub::SetupCheck check = lub::check_setup(coeffs, lub::Partner::wall, update->dt);
   if (!check.error.empty()) error->all(FLERR, "{}: {}", style, check.error);
   if (comm->me == 0) {
@@ -57,6 +58,7 @@ void FixWallLubricationBase::init_model(const char *style, const std::string &wh
   pair_budget = budget_owner ? &budget_owner->film_budget() : nullptr;
   contact_mass.init(style, !pair_budget);    // the pair style logs them where there is one
   films_pending = false;
+  overlap_warned = false;
   find_gravity();
 }
 

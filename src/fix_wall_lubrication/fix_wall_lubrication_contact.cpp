@@ -9,10 +9,14 @@
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/film_budget.h"
 #include "lubricated/film_cavitation.h"
+#include "lubricated/load_sharing.h"
+#include "lubricated/overlap_check.h"
 
 #include "atom.h"
+#include "error.h"
 #include "neighbor.h"
 #include "update.h"
+#include "utils.h"
 
 #include <algorithm>
 
@@ -57,6 +61,7 @@ void FixWallLubricationBase::begin_evaluation(bool defer_films)
 
 void FixWallLubricationBase::apply_contact(int i, double mass, const WallContact &contact)
 {
+  if (contact.gap < -lub::overlap_warning_fraction * atom->radius[i]) check_overlap(i, contact.gap, false);
   // The fluid's added mass (contact_mass.h) moves with the atom along n, and slows its load.
   if (contact_mass.carries_added_mass()) {
     WallContact carried = contact;
@@ -163,4 +168,41 @@ void FixWallLubricationBase::relieve_cavitation(lub::ContactForces &forces, cons
   const double gap = std::max(contact.gap, film_law.eps_saturation * radius);
   forces.normal.lubrication +=
       lub::cavitation_relief(film_law.six_pi_mu, radius, gap, contact.u_n, cavitation, forces.normal.lubrication);
+}
+
+// Where the overlap passes a limit (apply_contact), or the centre went behind the wall: the
+// ERROR on this rank (the run stops), the WARNING once per run.
+__attribute__((noinline)) void FixWallLubricationBase::check_overlap(int i, double gap, bool through)
+{
+  const double r = atom->radius[i];
+  const double fraction = lub::overlap_fraction(gap, r);
+  const lub::OverlapLevel level = through ? lub::OverlapLevel::error : lub::overlap_level(fraction);
+  if (level == lub::OverlapLevel::none || (level == lub::OverlapLevel::warning && overlap_warned)) return;
+  const std::string who =
+      fmt::format("atom {} (type {}) and the wall of fix {} ({})", atom->tag[i], atom->type[i], id, style);
+  const std::string text = lub::overlap_message(who, gap, r, fraction, coeffs, update->dt, through, true);
+  if (level == lub::OverlapLevel::error) error->one(FLERR, "{}", text);
+  overlap_warned = true;
+  error->warning(FLERR, "{}", text);
+}
+
+void FixWallLubricationBase::share_gravity_loads(int i, const lub::Vec3 *normal, const double *gap, double *load,
+                                                 int count) const
+{
+  lub::Vec3 touching[lub::max_shared_loads];
+  int index[lub::max_shared_loads], m = 0;
+  for (int k = 0; k < count; k++)
+    if (gap[k] < 0.0 && load[k] > 0.0) {
+      if (m == lub::max_shared_loads) return;    // more faces than a sphere can rest on: as they are
+      index[m] = k, touching[m++] = normal[k];
+    }
+  if (m < 2) return;
+  lub::Vec3 g;
+  for (const Gravity &each : gravity)
+    if (atom->mask[i] & each.groupbit)
+      g = lub::plus(g, {each.acceleration[0], each.acceleration[1], each.acceleration[2]});
+  double shared[lub::max_shared_loads];
+  lub::shared_loads(touching, m, g, shared);
+  for (int k = 0; k < m; k++)
+    load[index[k]] = shared[k];
 }

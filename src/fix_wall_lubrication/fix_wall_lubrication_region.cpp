@@ -20,6 +20,7 @@
 #include "region.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -190,15 +191,40 @@ void FixWallLubricationRegion::find_contacts()
 void FixWallLubricationRegion::contacts_of_atom(int i, double mass)
 {
   const double *xi = atom->x[i];
-  // A centre outside the region is left alone (as fix wall/gran/region).
+  const double *vi = midpoint && model.normal.exact ? midpoint->step_velocity(i) : pass.v[i];
+  // A centre outside the region is left alone (as fix wall/gran/region); one that was inside a
+  // step ago went through the wall (the overlap check).
   if (!region->match(xi[0], xi[1], xi[2])) {
     if (history) release_other_slots(i, nullptr, 0);
+    const double dt = update->dt;
+    if (!update->setupflag && region->match(xi[0] - vi[0] * dt, xi[1] - vi[1] * dt, xi[2] - vi[2] * dt))
+      check_overlap(i, -atom->radius[i], true);    // d >= R
     return;
   }
-  const double *vi = midpoint && model.normal.exact ? midpoint->step_velocity(i) : pass.v[i];
   const int nc = faces_near(i, vi);
+  share_face_loads(i, nc);
   for (int ic = 0; ic < nc; ic++)
     face_contact(i, mass, ic, vi);
+}
+
+// Gravity's load on each face within reach of atom i (face_load), shared among the faces it
+// overlaps (share_gravity_loads: a groove, a corner).
+void FixWallLubricationRegion::share_face_loads(int i, int nc)
+{
+  face_load.resize(nc);
+  if (gravity.empty()) {
+    std::fill(face_load.begin(), face_load.end(), 0.0);
+    return;
+  }
+  face_normal.resize(nc), face_gap.resize(nc);
+  const double r = atom->radius[i];
+  for (int ic = 0; ic < nc; ic++) {
+    const Region::Contact &c = region->contact[ic];
+    face_normal[ic] = c.r > 0.0 ? lub::Vec3{c.delx / c.r, c.dely / c.r, c.delz / c.r} : lub::Vec3{};
+    face_gap[ic] = c.r - r;
+    face_load[ic] = gravity_load(i, face_normal[ic]);
+  }
+  if (nc > 1) share_gravity_loads(i, face_normal.data(), face_gap.data(), face_load.data(), nc);
 }
 
 // The faces within reach of atom i (region->contact), whose step velocity is vi: the film's
@@ -252,7 +278,7 @@ void FixWallLubricationRegion::face_contact(int i, double mass, int ic, const do
     rel.u_n = vi[0] * n.x + vi[1] * n.y + vi[2] * n.z;
   }
   contact.u_n = rel.u_n;
-  contact.load = gravity_load(i, n);    // gravity pressing the atom onto the face
+  contact.load = face_load[ic];    // gravity pressing the atom onto the face (share_face_loads)
   if (!model.normal.acts(contact.gap, contact.film.value, contact.u_n, contact.load)) {
     if (history) forget_slot(i, c.iwall);
     return;

@@ -65,7 +65,12 @@ class FixWallLubricationRegion : public FixWallLubricationBase {
   int slots = 0;    // region->tmax
   double **history = nullptr;
   bool keeps_history() const { return coeffs.friction > 0.0; }
-  std::vector<int> faces;                   // the faces near the atom being evaluated
+  std::vector<int> faces;    // the faces near the atom being evaluated
+  // Gravity's steady load on each face near the atom being evaluated, shared among the faces it
+  // overlaps (share_face_loads), with the faces' normals and gaps.
+  std::vector<double> face_load, face_gap;
+  std::vector<lubricated::Vec3> face_normal;
+  void share_face_loads(int i, int nc);
   double *history_slot(int i, int face);    // its slot, taken (zeroed) when it has none
   void forget_slot(int i, int face);
   void release_other_slots(int i, const int *near, int n);

@@ -145,9 +145,12 @@ inline std::string validate_time_step(const Coefficients &c, double dt)
 // coefficients; from then on t_c is the contact's own, as with tcontact: a later time step
 // (timestep, fix dt/reset) keeps k and c (a spring that stiffened with a smaller step would
 // release energy into a contact under way) and changes only the steps per contact.
-inline void settle_contact_time(Coefficients &c, double dt)
+// A run without steps (`run 0`, often given before the real time step) settles nothing: it
+// evaluates with N_c times the current step.
+inline void settle_contact_time(Coefficients &c, double dt, bool run_has_steps = true)
 {
-  if (!(c.t_contact > 0.0) && !(c.settled_contact_time > 0.0)) c.settled_contact_time = c.n_contact * dt;
+  if (run_has_steps && !(c.t_contact > 0.0) && !(c.settled_contact_time > 0.0))
+    c.settled_contact_time = c.n_contact * dt;
 }
 
 // Advice that is not an error: the paper finds N_c = 8 the smallest count that keeps e_d. A t_c

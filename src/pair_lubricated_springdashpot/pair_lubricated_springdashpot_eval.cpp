@@ -11,12 +11,15 @@
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/film_budget.h"
+#include "lubricated/overlap_check.h"
 
 #include "atom.h"
+#include "error.h"
 #include "force.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "update.h"
+#include "utils.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,6 +80,9 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
   const double *reach_table = max_reach.data();
   const int stride = ntypes_alloc + 1;
   const double reach_all = reach_table[stride + 1];
+  const double *radius = atom->radius;
+  const double depth = overlap_depth;
+  int deep = 0;    // a pair overlaps by more than `depth` of the smaller radius (the overlap check)
   // The counts in locals: the reference nfilm, which the lists' stores might alias, would keep
   // its count in memory, a store-to-load chain through every entry.
   // 64-bit: indices without a sign extension per entry.
@@ -87,7 +93,7 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
     const int jnum = numneigh[i];
     if ((ncandidate + jnum > limit || nfilm_here + jnum > limit) && ncandidate + nfilm_here > 0) break;
     const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
-    const double radi_moved = grown[i];
+    const double radi_moved = grown[i], radi = radius[i];
     const double *reach_row = reach_table + type[i] * stride;
     const int *jlist = firstneigh[i];
     const char *touched = TANGENTIAL && history ? history->touched(i) : nullptr;
@@ -123,11 +129,46 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
         nfilm_here += keep & !(rsq < touch * touch) & !(TANGENTIAL && touched && touched[jj]);
       }
       ncandidate += keep;
+      const double deep_within = lub::overlap_distance(radi, radius[j], depth);
+      deep |= rsq < deep_within * deep_within;    // such a pair is in contact, hence kept
     }
   }
+  overlap_deep = deep != 0;
   next = ii;
   nfilm = static_cast<int>(nfilm_here);
   return static_cast<int>(ncandidate);
+}
+
+// Pass 1 found a pair among this piece's candidates overlapping by more than overlap_depth of
+// the smaller radius: the deepest pair of movable atoms, as an ERROR on this rank (the run
+// stops) or a WARNING once per run (then only overlaps beyond the error's fraction are looked for).
+__attribute__((noinline)) void PairLubricatedSpringDashpot::check_pair_overlaps(int ncandidate)
+{
+  double **x = atom->x;
+  const double *radius = atom->radius;
+  const double *inverse = inverse_mass_on ? inverse_mass.data() : nullptr;
+  int deepest = -1;
+  double largest = 0.0, deepest_gap = 0.0;
+  for (int c = 0; c < ncandidate; c++) {
+    const int i = loop_lists.candidate_i[c], j = loop_lists.candidate_j[c];
+    if (inverse && inverse[i] == 0.0 && inverse[j] == 0.0) continue;    // neither can move
+    const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+    const double gap = std::sqrt(del[0] * del[0] + del[1] * del[1] + del[2] * del[2]) - radius[i] - radius[j];
+    const double fraction = lub::overlap_fraction(gap, std::min(radius[i], radius[j]));
+    if (fraction > largest) largest = fraction, deepest = c, deepest_gap = gap;
+  }
+  if (deepest < 0 || lub::overlap_level(largest) == lub::OverlapLevel::none) return;
+  const int i = loop_lists.candidate_i[deepest], j = loop_lists.candidate_j[deepest];
+  const int ti = atom->type[i], tj = atom->type[j];
+  const std::string who = fmt::format("Pair style lubricated/springdashpot: atoms {} and {} (types {} {})",
+                                      atom->tag[i], atom->tag[j], ti, tj);
+  const std::string text = lub::overlap_message(who, deepest_gap, std::min(radius[i], radius[j]), largest,
+                                                coeffs[index(ti, tj)], update->dt, false);
+  if (lub::overlap_level(largest) == lub::OverlapLevel::error) error->one(FLERR, "{}", text);
+  if (overlap_warned) return;
+  overlap_warned = true;
+  overlap_depth = lub::overlap_error_fraction;
+  error->warning(FLERR, "{}", text);
 }
 
 // A pair that is not in contact now has no elongation to keep.
@@ -345,6 +386,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     if (network_due)
       network.check({loop_lists.candidate_i.data(), loop_lists.candidate_j.data(), ncandidate,
                      inverse_mass_on ? inverse_mass.data() : nullptr, midpoint, coeffs.data()});
+    if (overlap_deep) check_pair_overlaps(ncandidate);
     if (loop.budget) budget.reserve_records(ncandidate + nfilm);
     if constexpr (SPLIT && !TANGENTIAL) {
       vector_forces<false>(ncandidate, nfilm, v, loop.omega, evaluate);

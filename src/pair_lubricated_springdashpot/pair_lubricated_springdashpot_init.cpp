@@ -11,6 +11,8 @@
 #include "fix_nve_sphere_midpoint/fix_nve_sphere_midpoint.h"
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/check_setup.h"
+#include "lubricated/overlap_check.h"
+#include "plugin/run_steps.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -37,6 +39,7 @@ void PairLubricatedSpringDashpot::init_style()
   check_atom_style();
   network.start_run();    // set_loads (init_one) turns it on
   const TypePairNeeds needs = settle_coefficients();
+  overlap_warned = false, overlap_depth = lub::overlap_warning_fraction;
   keep_contact_history(needs.friction);
   if (comm->me == 0)
     for (const auto &msg : needs.advice)
@@ -74,7 +77,7 @@ PairLubricatedSpringDashpot::TypePairNeeds PairLubricatedSpringDashpot::settle_c
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++) {
       if (!setflag[i][j]) continue;
-      lub::settle_contact_time(coeffs[index(i, j)], update->dt);
+      lub::settle_contact_time(coeffs[index(i, j)], update->dt, run_has_steps(update));
       coeffs[index(j, i)] = coeffs[index(i, j)];
       const lub::Coefficients &c = coeffs[index(i, j)];
       const lub::SetupCheck check = lub::check_setup(c, lub::Partner::particle, update->dt);
