@@ -120,9 +120,9 @@ void FilmSolveStep::apply_solved_films(const Records &records, FilmBudget::Tally
     const lub::FilmLink &link = links[k];
     const int r = link_record[k], i = link.i, j = link.j;
     const lub::FilmLinkForce solved = lub::film_link_force(link, atoms, velocity.data(), false);
-    const lub::Vec3 shear = records.shear ? lub::Vec3{records.shear[3 * r], records.shear[3 * r + 1],
-                                                      records.shear[3 * r + 2]}
-                                          : lub::Vec3{};
+    const lub::Vec3 shear = records.shear
+                                ? lub::Vec3{records.shear[3 * r], records.shear[3 * r + 1], records.shear[3 * r + 2]}
+                                : lub::Vec3{};
     const lub::Vec3 applied = lub::plus(lub::scaled(link.normal, records.film[r]), shear);
     const lub::Vec3 change = lub::minus(solved.force_i, applied);
     // The step-exact shear film's torques were -R n x F_t on both atoms.

@@ -34,9 +34,9 @@ inline FilmLink pair_film_link(const ContactModel &model, int i, int j, const Ve
   const FilmRadius radius = film_radius_pair(radius_i, radius_j);
   const double eps = (r - radius_i - radius_j) / radius.value;
   link.normal_damping = film.damping(eps, radius.value);
-  link.shear_damping = shear_film_coefficient(model.tangential, eps, film.activation_for(radius.value),
-                                              film.eps_saturation, film.eps_release,
-                                              radius_i * radius_j / (radius_i + radius_j));
+  link.shear_damping =
+      shear_film_coefficient(model.tangential, eps, film.activation_for(radius.value), film.eps_saturation,
+                             film.eps_release, radius_i * radius_j / (radius_i + radius_j));
   return link;
 }
 

@@ -94,6 +94,9 @@ void PairLubricatedSpringDashpot::set_comm_sizes()
 {
   comm_forward = film_solve.on ? std::max(lub::network_values, lub::film_dofs) : lub::network_values;
   comm_reverse = film_solve.on ? std::max(lub::network_values, 36) : lub::network_values;
+  // The solve sends its sums back with newton pair off too (a film with a ghost partner is
+  // solved by one of the two ranks that hold it).
+  comm_reverse_off = film_solve.on ? 36 : 0;
 }
 
 // pair_style lubricated/springdashpot [vector yes|no] [limit atom|pair|implicit] [trim yes|no]

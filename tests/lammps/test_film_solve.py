@@ -146,3 +146,39 @@ def test_restart_keeps_the_mode(lmp):
     assert rows(lmp.log)[-1][4] > 0
     warning = next(line for line in lmp.log.splitlines() if line.startswith("WARNING") and "film solve" in line)
     assert "tolerance 1e-10" in warning and "iterations 1 " in warning
+
+
+def test_newton_off_matches_newton_on(lmp):
+    """With newton pair off each film with a ghost partner is recorded on both ranks and solved
+    by one: 1 and 2 ranks with newton off give newton on's final energy (tolerance 1e-12; 30
+    steps, the energy 1e-6 of E0: the films are summed in another order)."""
+    script = dense_scenes.fcc(1.0, 1e-6, steps=30, loop="geom", limit="implicit tolerance 1e-12")
+    reference = lmp(script)["final"][0]
+    off = script.replace("newton on", "newton off")
+    for nprocs in (1, 2):
+        final = lmp(with_solve_columns(off), nprocs=nprocs)["final"]
+        assert dense_scenes.ranks(lmp.log) == {nprocs}
+        assert rows(lmp.log)[-1][4] > 0
+        assert final[0] == pytest.approx(reference, rel=1e-10)
+
+
+STRESS = """compute sa all stress/atom NULL pair
+compute ssum all reduce sum c_sa[1] c_sa[2] c_sa[3] c_sa[4] c_sa[5] c_sa[6]
+compute p all pressure NULL pair
+variable pxy_atoms equal -c_ssum[4]/vol
+variable pxx_atoms equal -c_ssum[1]/vol
+run 0
+print "RESULT stress $(c_p[1]:%.17g) $(v_pxx_atoms:%.17g) $(c_p[4]:%.17g) $(v_pxy_atoms:%.17g)"
+"""
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_solved_films_are_in_the_virial(lmp, nprocs):
+    """compute pressure (the global virial, f.r over owned and ghost atoms) and the sum of
+    compute stress/atom (each pair's tally) agree with the solved films, which dominate the
+    stress of the bed: both see every solved film force."""
+    script = dense_scenes.fcc(1.0, 1e-6, steps=20, loop="geom", limit="implicit",
+                              extra="friction 0.3 shearfilm yes")
+    stress = lmp(script.replace("run 20\n", "run 20\n" + STRESS), nprocs=nprocs)["stress"]
+    assert stress[1] == pytest.approx(stress[0], rel=1e-9)
+    assert stress[3] == pytest.approx(stress[2], rel=1e-9, abs=1e-9 * abs(stress[0]))
