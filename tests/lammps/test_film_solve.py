@@ -5,9 +5,13 @@ spheres over budget solved together, 1 and 2 ranks agree to the solver's toleran
 keywords end in an ERROR naming them, and a restart keeps the mode.
 
 Scenes: tools/dense_scenes.py (256 spheres on an fcc lattice, every gap in the film, St =
-5.6e-3 at mu_f = 1 Pa s). The thermo rows gain the solve's iterations and solved films
-(compute pair, its 3rd and 4th values).
+5.6e-3 at mu_f = 1 Pa s; the thermo rows gain the solve's iterations and solved films, compute
+pair's 3rd and 4th values), and the polydisperse packings of test_dense_packings.py (radii
+1:10, its fixture and energy criteria), on wet walls too (whose films keep the budget's
+scaling). Newton pair off and 2 ranks solve each film once; compute pressure and the sum of
+compute stress/atom see the solved films alike.
 """
+import numpy as np
 import pytest
 
 import dense_scenes
@@ -182,3 +186,55 @@ def test_solved_films_are_in_the_virial(lmp, nprocs):
     stress = lmp(script.replace("run 20\n", "run 20\n" + STRESS), nprocs=nprocs)["stress"]
     assert stress[1] == pytest.approx(stress[0], rel=1e-9)
     assert stress[3] == pytest.approx(stress[2], rel=1e-9, abs=1e-9 * abs(stress[0]))
+
+
+# ------------------------------------------------------------------------------------------
+# The polydisperse dense packings of test_dense_packings.py (radii 1:10) with limit implicit:
+# their energy criteria, and the solve taken.
+# ------------------------------------------------------------------------------------------
+
+from test_dense_packings import (ROUND_OFF as STRICT, assert_bounded, dt_for, mu_for,  # noqa: E402,F401
+                                 packings, run_energy, walled_scene, with_velocities)
+import dense_packings as dp  # noqa: E402
+
+
+def implicit_was_solved(log):
+    """The mode logged. (The 1:10 beds with contacts may warn: at St 1e-3 a few steps' solves
+    stop at 200 iterations with a relative residual of 1e-8 to 3e-7; the energy criteria hold.)"""
+    assert "(limit implicit)" in log
+
+
+def test_gapped_polydisperse_bed_without_contact_never_gains(lmp, packings):
+    """Strict (films alone, St 1e-3, dt 5e-4 R_min/U, 500 steps): ke + erot never rises beyond
+    1e-12 E0, and the films dissipate."""
+    script = dp.energy_scene(with_velocities(lmp, packings["gapped"]), mu_for(1e-3), dt_for(5e-4), 500, every=1,
+                             limit="implicit")
+    rows, log = run_energy(lmp, script)
+    implicit_was_solved(log)
+    assert len(rows) == 501 and set(rows[:, 1]) == {dp.N_ATOMS}
+    assert not rows[:, 4].any()
+    energy = rows[:, 2] + rows[:, 3]
+    assert np.diff(energy).max() <= STRICT * energy[0]
+    assert energy[-1] < 0.5 * energy[0]
+
+
+@pytest.mark.parametrize("bed", ["gapped", "preloaded"])
+def test_polydisperse_bed_with_contacts_never_gains(lmp, packings, bed):
+    """Bounded (test_dense_packings.py): St 1e-3, dt 5e-3 R_min/U, 500 steps."""
+    script = dp.energy_scene(with_velocities(lmp, packings[bed]), mu_for(1e-3), dt_for(5e-3), 500, every=10,
+                             limit="implicit")
+    rows, log = run_energy(lmp, script)
+    implicit_was_solved(log)
+    energy = assert_bounded(rows, rows[0, 2] + rows[0, 3] + rows[0, 4])
+    assert energy[-1] <= energy[0]
+
+
+def test_bed_settling_on_wet_walls_never_gains(lmp, packings):
+    """The walled bed with the shear film on pairs and walls (mu_f 10 Pa s, 5e-5 s, 1000 steps):
+    the pairs' films of spheres over budget solved, the walls' films scaled by the budget."""
+    rows, log = run_energy(lmp, walled_scene(lmp, packings, 10.0, 5e-5, 1000, limit="implicit",
+                                             extra="shearfilm yes"))
+    implicit_was_solved(log)
+    energy = assert_bounded(rows, rows[0, 2] + rows[0, 3] + rows[0, 4] + rows[0, 5])
+    assert rows[-1, 5] < rows[0, 5]
+    assert energy[-1] < energy[0]
