@@ -238,3 +238,9 @@ def test_bed_settling_on_wet_walls_never_gains(lmp, packings):
     energy = assert_bounded(rows, rows[0, 2] + rows[0, 3] + rows[0, 4] + rows[0, 5])
     assert rows[-1, 5] < rows[0, 5]
     assert energy[-1] < energy[0]
+
+
+def test_midpoint_integrator_is_refused(lmp):
+    script = dense_scenes.fcc(1.0, 1e-6, steps=1, limit="implicit")
+    lmp(script.replace("fix nve all nve/sphere", "fix nve all nve/sphere/midpoint"), check=False)
+    assert "limit implicit is not available with fix nve/sphere/midpoint" in lmp.log
