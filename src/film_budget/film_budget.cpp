@@ -3,6 +3,7 @@
 ------------------------------------------------------------------------- */
 
 #include "film_budget.h"
+#include "film_solve_step.h"
 
 #include "lubricated/film_budget.h"
 
@@ -21,9 +22,20 @@
 using namespace LAMMPS_NS;
 namespace lub = lubricated;
 
-void FilmBudget::init(bool limit_atom, bool wet_pairs, bool shear_films)
+FilmBudget::FilmBudget(LAMMPS *lmp, AtomVectorComm &exchange) :
+    Pointers(lmp), exchange(exchange), solve_step(new FilmSolveStep(lmp, exchange))
 {
-  limit_per_atom = limit_atom;
+}
+
+FilmBudget::~FilmBudget() = default;
+
+void FilmBudget::init(bool limit_atom, bool wet_pairs, bool shear_films, const FilmSolveSettings &solve)
+{
+  limit_per_atom = limit_atom || solve.on;
+  solve_on = solve.on;
+  solve_step->configure(solve);
+  solve_step->start_run();
+  solve_step->clear_counts();
   participants.clear();
   any_wet_participant = false;
   for (Fix *ifix : modify->get_fix_list()) {    // fix wall/lubrication and wall/lubrication/region
@@ -47,6 +59,7 @@ void FilmBudget::grow_atoms()
 
 void FilmBudget::begin_step(const NeighList *list, const TypeTables &tables)
 {
+  this->tables = tables;
   if (!enabled)
     now = false;
   else if (neighbor->ago == 0 || update->setupflag || update->dt > bound_dt)
@@ -166,9 +179,11 @@ void FilmBudget::reserve_records(int more)
 }
 
 // Loads summed on the owners, scales sent to the ghosts, then every film whose atoms are over
-// budget is scaled down by 1 / max(1, D_i, D_j) (lubricated/film_budget.h).
-void FilmBudget::finish(const double *inverse_mass, Tally *tally)
+// budget is scaled down by 1 / max(1, D_i, D_j) (lubricated/film_budget.h), or under `limit
+// implicit` solved with the others of such atoms (film_solve_step.h).
+void FilmBudget::finish(const double *inverse_mass, Tally *tally, const StepInputs *step)
 {
+  solve_step->clear_counts();
   if (!now) return;
   const int nlocal = atom->nlocal;
   if (force->newton_pair) exchange.reverse(load_of_atom.data(), 1);
@@ -186,7 +201,11 @@ void FilmBudget::finish(const double *inverse_mass, Tally *tally)
   MPI_Allreduce(&over, &any_over, 1, MPI_INT, MPI_MAX, world);
   if (!any_over) return;
   exchange.forward(scale, 1);
-  if (shear_records)
+  if (solve_on && step)
+    solve_step->solve(
+        {record_i.data(), record_j.data(), record_force.data(), shear_records ? record_shear.data() : nullptr, nrecord},
+        scale, tables, *step, tally);
+  else if (shear_records)
     scale_films_and_shear(tally);
   else
     scale_films(tally);
@@ -253,9 +272,19 @@ void FilmBudget::scale_films_and_shear(Tally *tally)
   }
 }
 
+int FilmBudget::solve_iterations() const
+{
+  return solve_step->last_iterations();
+}
+
+int FilmBudget::solved_films() const
+{
+  return solve_step->last_solved_films();
+}
+
 double FilmBudget::memory_usage() const
 {
-  return (record_i.capacity() + record_j.capacity()) * sizeof(int) +
+  return solve_step->memory_usage() + (record_i.capacity() + record_j.capacity()) * sizeof(int) +
          (load_of_atom.capacity() + scale_of_atom.capacity() + record_force.capacity() + record_shear.capacity()) *
              sizeof(double);
 }

@@ -17,9 +17,17 @@
 #include "film_budget/film_budget_participant.h"
 #include "lubricated/contact.h"
 
+#include <memory>
 #include <vector>
 
 namespace LAMMPS_NS {
+
+// `limit implicit` (film_solve_step.h): the films of atoms over budget solved together.
+struct FilmSolveSettings {
+  bool on = false;
+  double tolerance = 1e-8;    // relative residual (lubricated/film_solve.h)
+  int max_iterations = 200;
+};
 
 // The centre distance within which atoms i and j can act before the next neighbor list build:
 // their radii, the types' largest film reach (max_reach, per type pair) and the skin (each atom
@@ -32,12 +40,14 @@ inline double reach_until_next_build(const double *radius, const int *type, cons
 
 class FilmBudget : protected Pointers {
  public:
-  FilmBudget(LAMMPS *lmp, AtomVectorComm &exchange) : Pointers(lmp), exchange(exchange) {}
+  FilmBudget(LAMMPS *lmp, AtomVectorComm &exchange);
+  ~FilmBudget() override;
 
   // At init_style: the participants (every fix that is one), and whether the budget is kept:
   // under `limit atom` where a pair or a participant has films. shear_films: some type pair
   // has a shear film, which shares the budget.
-  void init(bool limit_per_atom, bool wet_pairs, bool shear_films);
+  // solve: `limit implicit` (limit_per_atom too), the films of atoms over budget solved.
+  void init(bool limit_per_atom, bool wet_pairs, bool shear_films, const FilmSolveSettings &solve = {});
   bool kept() const { return enabled; }
   bool wet_participants() const { return any_wet_participant; }
   // This step's: whether the films can exceed any atom's budget (else nothing is recorded or
@@ -100,13 +110,26 @@ class FilmBudget : protected Pointers {
   // the ghosts, and the recorded films of atoms over budget scaled down. inverse_mass: the
   // contact masses' inverses where some atom is immovable (its load limits nothing), else
   // nullptr; tally: where the pair style tallies, else nullptr.
-  void finish(const double *inverse_mass, Tally *tally);
+  // With `limit implicit` (step given) those films are solved instead (film_solve_step.h), at
+  // the velocities the evaluation took (owned and ghost) over kick_time.
+  struct StepInputs {
+    double **v, **omega;
+    double kick_time;
+    const double *inverse_mass;
+  };
+  void finish(const double *inverse_mass, Tally *tally, const StepInputs *step = nullptr);
+  // The coupled solve of this evaluation: its iterations and this rank's solved films (0: none).
+  int solve_iterations() const;
+  int solved_films() const;
 
   double memory_usage() const;
 
  private:
   AtomVectorComm &exchange;
   bool limit_per_atom = true, enabled = false, shear_records = false, any_wet_participant = false;
+  bool solve_on = false;
+  std::unique_ptr<class FilmSolveStep> solve_step;
+  TypeTables tables{};    // begin_step's, for the solve's coefficients
   std::vector<FilmBudgetParticipant *> participants;
   // Per owned and ghost atom: the summed film share and its scale.
   std::vector<double> load_of_atom, scale_of_atom;

@@ -9,6 +9,8 @@
 
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/check_setup.h"
+#include "lubricated/film_budget.h"
+#include "lubricated/film_solve.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -39,15 +41,14 @@ PairLubricatedSpringDashpot::PairLubricatedSpringDashpot(LAMMPS *lmp) :
   single_enable = 1;
   single_extra = 3;    // contact force, lubrication force, normalised gap
   svector = new double[single_extra];
-  // compute pair: the pairs the last evaluation selected and, of those, the film-only ones.
-  nextra = 2;
+  // compute pair: the pairs the last evaluation selected and, of those, the film-only ones;
+  // under limit implicit the coupled solve's iterations and solved films (else 0).
+  nextra = 4;
   pvector = new double[nextra]();
   finitecutflag = 1;
   restartinfo = 1;
   writedata = 1;
-  // The film budget: scales forward, loads reverse (1 value per atom); the contact masses
-  // forward (1); the contact-network check: its sums both ways (lub::network_values).
-  comm_forward = comm_reverse = lub::network_values;
+  set_comm_sizes();
   // The contact-history fix's place in the fix list, held from here by a placeholder that the
   // history replaces at the first run with friction (as LAMMPS's granular styles do): fixes
   // defined after the pair style that add or remove atoms in pre_exchange (deposit, evaporate)
@@ -86,42 +87,88 @@ void PairLubricatedSpringDashpot::allocate()
   cutoff_given.assign((n + 1) * (n + 1), 0.0);
 }
 
-// pair_style lubricated/springdashpot [vector yes|no] [limit atom|pair] [trim yes|no]
+// The film budget: scales forward, loads reverse (1 value per atom); the contact masses
+// forward (1); the contact-network check: its sums both ways (lub::network_values); the coupled
+// film solve: 6 values per atom both ways, and 36 in reverse (film_solve.h).
+void PairLubricatedSpringDashpot::set_comm_sizes()
+{
+  comm_forward = film_solve.on ? std::max(lub::network_values, lub::film_dofs) : lub::network_values;
+  comm_reverse = film_solve.on ? std::max(lub::network_values, 36) : lub::network_values;
+  // The solve sends its sums back with newton pair off too (a film with a ghost partner is
+  // solved by one of the two ranks that hold it).
+  comm_reverse_off = film_solve.on ? 36 : 0;
+}
+
+// pair_style lubricated/springdashpot [vector yes|no] [limit atom|pair|implicit] [trim yes|no]
+//                                     [tolerance T] [iterations N] (the last two with limit implicit)
 void PairLubricatedSpringDashpot::settings(int narg, char **arg)
 {
   require_supported_units(lmp, STYLE);
   vector_enabled = true;
   limit_per_atom = true;
   trim_enabled = true;
+  film_solve = FilmSolveSettings();
+  bool solve_keywords = false;
   for (int iarg = 0; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
-    if (key != "vector" && key != "limit" && key != "trim")
+    if (key != "vector" && key != "limit" && key != "trim" && key != "tolerance" && key != "iterations")
       error->all(FLERR,
-                 "{}: unknown keyword '{}' (allowed: vector yes|no, limit atom|pair, trim yes|no; "
-                 "coefficients go in pair_coeff)",
+                 "{}: unknown keyword '{}' (allowed: vector yes|no, limit atom|pair|implicit, trim yes|no, "
+                 "tolerance T, iterations N; coefficients go in pair_coeff)",
                  STYLE, key);
-    const char *allowed = key == "limit" ? "atom or pair" : "yes or no";
+    const char *allowed = key == "limit"        ? "atom, pair or implicit"
+                          : key == "tolerance"  ? "a number in (0, 1)"
+                          : key == "iterations" ? "an integer >= 1"
+                                                : "yes or no";
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value ({})", STYLE, key, allowed);
     const std::string value = arg[iarg + 1];
     if (key == "limit") {
-      if (value != "atom" && value != "pair")
-        error->all(FLERR, "{}: limit = {} is not allowed (atom or pair)", STYLE, value);
-      limit_per_atom = value == "atom";
+      if (value != "atom" && value != "pair" && value != "implicit")
+        error->all(FLERR, "{}: limit = {} is not allowed (atom, pair or implicit)", STYLE, value);
+      limit_per_atom = value != "pair";
+      film_solve.on = value == "implicit";
+      continue;
+    }
+    if (key == "tolerance" || key == "iterations") {
+      parse_film_solve_keyword(key, value);
+      solve_keywords = true;
       continue;
     }
     if (value != "yes" && value != "no") error->all(FLERR, "{}: {} = {} is not allowed (yes or no)", STYLE, key, value);
     (key == "vector" ? vector_enabled : trim_enabled) = value == "yes";
   }
+  if (solve_keywords && !film_solve.on)
+    error->all(FLERR, "{}: tolerance and iterations belong to limit implicit (the coupled film solve)", STYLE);
+  set_comm_sizes();
+}
+
+void PairLubricatedSpringDashpot::parse_film_solve_keyword(const std::string &key, const std::string &value)
+{
+  if (key == "tolerance") {
+    double t = 0.0;
+    if (!lub::detail::to_number(value, t) || !(t > 0.0 && t < 1.0))
+      error->all(FLERR, "{}: tolerance = {} is not allowed (a number in (0, 1))", STYLE, value);
+    film_solve.tolerance = t;
+    return;
+  }
+  double n = 0.0;
+  if (!lub::detail::to_number(value, n) || !(n >= 1.0 && n <= 1e9) || n != std::floor(n))
+    error->all(FLERR, "{}: iterations = {} is not allowed (an integer from 1 to 1e9)", STYLE, value);
+  film_solve.max_iterations = static_cast<int>(n);
 }
 
 // One int: bit 0 vector yes, bit 1 limit pair, bit 2 trim no, bit 3 a cutoff follows each type
-// pair's coefficients (files written before `limit`, `trim` or `cutoff` read as atom, yes and
+// pair's coefficients, bit 4 limit implicit, then its tolerance (double) and iterations (int)
+// follow (files written before `limit`, `trim`, `cutoff` or `implicit` read as atom, yes and
 // cutoffs from the radii).
 void PairLubricatedSpringDashpot::write_restart_settings(FILE *fp)
 {
-  const int flag =
-      (vector_enabled ? 1 : 0) | (limit_per_atom ? 0 : 2) | (trim_enabled ? 0 : 4) | (any_cutoff_given() ? 8 : 0);
+  const int flag = (vector_enabled ? 1 : 0) | (limit_per_atom ? 0 : 2) | (trim_enabled ? 0 : 4) |
+                   (any_cutoff_given() ? 8 : 0) | (film_solve.on ? 16 : 0);
   fwrite(&flag, sizeof(int), 1, fp);
+  if (!film_solve.on) return;
+  fwrite(&film_solve.tolerance, sizeof(double), 1, fp);
+  fwrite(&film_solve.max_iterations, sizeof(int), 1, fp);
 }
 
 void PairLubricatedSpringDashpot::read_restart_settings(FILE *fp)
@@ -133,6 +180,17 @@ void PairLubricatedSpringDashpot::read_restart_settings(FILE *fp)
   limit_per_atom = (flag & 2) == 0;
   trim_enabled = (flag & 4) == 0;
   restart_cutoffs = (flag & 8) != 0;
+  film_solve = FilmSolveSettings();
+  film_solve.on = (flag & 16) != 0;
+  if (film_solve.on) {
+    if (comm->me == 0) {
+      utils::sfread(FLERR, &film_solve.tolerance, sizeof(double), 1, fp, nullptr, error);
+      utils::sfread(FLERR, &film_solve.max_iterations, sizeof(int), 1, fp, nullptr, error);
+    }
+    MPI_Bcast(&film_solve.tolerance, 1, MPI_DOUBLE, 0, world);
+    MPI_Bcast(&film_solve.max_iterations, 1, MPI_INT, 0, world);
+  }
+  set_comm_sizes();
 }
 
 bool PairLubricatedSpringDashpot::any_cutoff_given() const
@@ -213,10 +271,28 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
     else
       vectorised ? eval<false, false, true>() : eval<false, false>();
   }
-  budget.finish(inverse_mass_on ? inverse_mass.data() : nullptr, evflag ? this : nullptr);
+  finish_film_budget();
   pvector[0] = static_cast<double>(selected_pairs);
   pvector[1] = static_cast<double>(film_only_pairs);
+  // compute pair sums over ranks: the iterations (the same on every rank) counted once.
+  pvector[2] = comm->me == 0 ? budget.solve_iterations() : 0.0;
+  pvector[3] = static_cast<double>(budget.solved_films());
   if (vflag_fdotr) virial_fdotr_compute();
+}
+
+// The film budget's pass after the loops; under limit implicit with the velocities and the kick
+// time of the loops' films (pair_loop), which the coupled solve takes.
+void PairLubricatedSpringDashpot::finish_film_budget()
+{
+  const double *inverse = inverse_mass_on ? inverse_mass.data() : nullptr;
+  if (!film_solve.on) {
+    budget.finish(inverse, evflag ? this : nullptr);
+    return;
+  }
+  const FilmBudget::StepInputs step{continued ? step_velocity->velocity() : atom->v,
+                                    continued ? step_velocity->spin() : atom->omega,
+                                    lub::film_kick_time(update->dt, update->setupflag && !continued, false), inverse};
+  budget.finish(inverse, evflag ? this : nullptr, &step);
 }
 
 double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, double rsq, double /*factor_coul*/,

@@ -103,6 +103,10 @@ class PairLubricatedSpringDashpot : public Pair, public FilmBudgetOwner, private
   AtomVectorComm exchange;
   // Many-body film budget (`limit atom`, the default; `limit pair`: each pair's own cap only).
   bool limit_per_atom = true;
+  FilmSolveSettings film_solve;    // `limit implicit` (film_budget/film_solve_step.h)
+  void set_comm_sizes();
+  void parse_film_solve_keyword(const std::string &key, const std::string &value);
+  void finish_film_budget();
   FilmBudget budget;
   void tally_film_correction(int i, int j, double fpair, double delx, double dely, double delz) override;
   void tally_film_correction_xyz(int i, int j, double fx, double fy, double fz, double delx, double dely,

@@ -181,11 +181,20 @@ void PairLubricatedSpringDashpot::choose_loops()
 // films share it.
 void PairLubricatedSpringDashpot::init_film_budget(bool any_shear_film)
 {
-  budget.init(limit_per_atom, any_wet, any_shear_film);
+  // The coupled solve takes the velocities of velocity Verlet's step (fix nve/sphere), not the
+  // midpoint integrator's extrapolated ones.
+  if (film_solve.on && midpoint)
+    error->all(FLERR,
+               "{}: limit implicit is not available with fix nve/sphere/midpoint (use fix nve/sphere, "
+               "or limit atom)",
+               STYLE);
+  budget.init(limit_per_atom, any_wet, any_shear_film, film_solve);
   if ((any_wet || budget.wet_participants()) && comm->me == 0)
     utils::logmesg(lmp, "{}: {}\n", STYLE,
-                   budget.kept() ? "films within each sphere's many-body budget (limit atom)"
-                                 : "each film within its own cap only (limit pair)");
+                   !budget.kept()  ? "each film within its own cap only (limit pair)"
+                   : film_solve.on ? "films of spheres over their many-body budget solved together (limit "
+                                     "implicit); the walls' films within the budget"
+                                   : "films within each sphere's many-body budget (limit atom)");
 }
 
 // Point particles are refused; with a grid spacing the smallest spheres have the largest

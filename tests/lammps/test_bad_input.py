@@ -63,7 +63,7 @@ CASES = {
                                   ["keyword vector needs a value"]),
     "pair_style_limit_value": (script().replace("pair_style lubricated/springdashpot",
                                                 "pair_style lubricated/springdashpot limit none"),
-                               ["limit = none", "atom or pair"]),
+                               ["limit = none", "atom, pair or implicit"]),
     "pair_style_limit_missing": (script().replace("pair_style lubricated/springdashpot",
                                                   "pair_style lubricated/springdashpot vector yes limit"),
                                  ["keyword limit needs a value"]),

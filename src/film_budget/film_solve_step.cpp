@@ -1,0 +1,150 @@
+/* ----------------------------------------------------------------------
+   The coupled film solve of pair_style lubricated/springdashpot (film_solve_step.h)
+------------------------------------------------------------------------- */
+
+#include "film_solve_step.h"
+
+#include "lubricated/film_link.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace LAMMPS_NS;
+namespace lub = lubricated;
+
+void FilmSolveStep::configure(const FilmSolveSettings &settings)
+{
+  options.tolerance = settings.tolerance;
+  options.max_iterations = settings.max_iterations;
+}
+
+// The links of the records in the solve, those this rank solves first: every film once over all
+// ranks (with newton off a film with a ghost partner is recorded on both ranks; the one holding
+// the smaller tag solves it). Returns how many are solved here.
+int FilmSolveStep::collect_links(const Records &records, const double *scale, const FilmBudget::TypeTables &tables)
+{
+  double **x = atom->x;
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  const tagint *tag = atom->tag;
+  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+  links.clear();
+  link_record.clear();
+  int n_solved = 0;
+  for (int pass = 0; pass < 2; pass++)
+    for (int r = 0; r < records.count; r++) {
+      const int i = records.i[r], j = records.j[r];
+      if (std::min(scale[i], scale[j]) == 1.0) continue;
+      const bool here = newton_pair || j < nlocal || tag[i] < tag[j];
+      if (here != (pass == 0)) continue;
+      const lub::Vec3 del{x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double r_ij = std::sqrt(lub::dot(del, del));
+      const lub::ContactModel &model = tables.models[type[i] * tables.stride + type[j]];
+      links.push_back(lub::pair_film_link(model, i, j, lub::scaled(del, 1.0 / r_ij), r_ij, radius[i], radius[j]));
+      link_record.push_back(r);
+      n_solved += here;
+    }
+  return n_solved;
+}
+
+// Per owned and ghost atom: inverse mass (the contact masses' where some atom is immovable),
+// inverse moment of inertia (0 where immovable) and the velocities w = (v, omega) the
+// evaluation took (the ghosts' as the engine communicated them).
+void FilmSolveStep::gather_atoms(const FilmBudget::StepInputs &step)
+{
+  const int nall = atom->nlocal + atom->nghost;
+  const double *rmass = atom->rmass, *radius = atom->radius;
+  inverse_mass.resize(nall), inverse_inertia.resize(nall);
+  velocity.resize(lub::film_dofs * nall), increment.resize(lub::film_dofs * nall);
+  zero_force.assign(lub::film_dofs * nall, 0.0);    // Lie splitting: the other forces stay explicit
+  for (int k = 0; k < nall; k++) {
+    inverse_mass[k] = step.inverse_mass ? step.inverse_mass[k] : 1.0 / rmass[k];
+    inverse_inertia[k] = inverse_mass[k] > 0.0 ? 1.0 / lub::sphere_inertia(rmass[k], radius[k]) : 0.0;
+    double *w = &velocity[lub::film_dofs * k];
+    for (int d = 0; d < 3; d++)
+      w[d] = step.v[k][d], w[3 + d] = step.omega[k][d];
+  }
+}
+
+void FilmSolveStep::solve(const Records &records, const double *scale, const FilmBudget::TypeTables &tables,
+                          const FilmBudget::StepInputs &step, FilmBudget::Tally *tally)
+{
+  const int n_solved = collect_links(records, scale, tables);
+  gather_atoms(step);
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  lub::FilmAtoms atoms;
+  atoms.owned = nlocal, atoms.total = nall;
+  atoms.inverse_mass = inverse_mass.data(), atoms.inverse_inertia = inverse_inertia.data();
+  atoms.radius = atom->radius;
+  lub::FilmComm film_comm;
+  film_comm.forward = [this](double *data, int width) { exchange.forward(data, width); };
+  film_comm.reverse = [this](double *data, int width) { exchange.reverse(data, width); };
+  film_comm.sum = [this](double *values, int count) {
+    MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_DOUBLE, MPI_SUM, world);
+  };
+  const lub::FilmSolveResult result = solver.solve(atoms, links.data(), n_solved, step.kick_time, velocity.data(),
+                                                   zero_force.data(), increment.data(), options, film_comm);
+  iterations = result.iterations, solved = n_solved;
+  if (!result.converged && !warned) {
+    warned = true;
+    if (comm->me == 0)
+      error->warning(FLERR,
+                     "Pair style lubricated/springdashpot: the coupled film solve (limit implicit) did not "
+                     "converge to tolerance {} within iterations {} (relative residual {:.3g} after {}); "
+                     "raise iterations or tolerance, or shorten the time step (warned once per run)",
+                     options.tolerance, options.max_iterations, result.residual, result.iterations);
+  }
+  // w' = w + x on owned and ghost atoms (the solver forwarded x).
+  for (int e = 0; e < lub::film_dofs * nall; e++)
+    velocity[e] += increment[e];
+  apply_solved_films(records, tally);
+}
+
+// Per link: its force at w' (the solved film) in place of the step-exact film the loops applied,
+// on i and j (Newton's third law, as the pair loops apply it: on j where newton is on or j is
+// owned), with torques -R n x F_t, and tallied.
+void FilmSolveStep::apply_solved_films(const Records &records, FilmBudget::Tally *tally)
+{
+  lub::FilmAtoms atoms;
+  atoms.owned = atom->nlocal, atoms.total = atom->nlocal + atom->nghost;
+  atoms.radius = atom->radius;
+  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+  double **x = atom->x, **f = atom->f, **torque = atom->torque;
+  const double *radius = atom->radius;
+  for (std::size_t k = 0; k < links.size(); k++) {
+    const lub::FilmLink &link = links[k];
+    const int r = link_record[k], i = link.i, j = link.j;
+    const lub::FilmLinkForce solved = lub::film_link_force(link, atoms, velocity.data(), false);
+    const lub::Vec3 shear = records.shear
+                                ? lub::Vec3{records.shear[3 * r], records.shear[3 * r + 1], records.shear[3 * r + 2]}
+                                : lub::Vec3{};
+    const lub::Vec3 applied = lub::plus(lub::scaled(link.normal, records.film[r]), shear);
+    const lub::Vec3 change = lub::minus(solved.force_i, applied);
+    // The step-exact shear film's torques were -R n x F_t on both atoms.
+    const lub::Vec3 nxs = lub::cross(link.normal, shear);
+    const lub::Vec3 torque_i = lub::plus(solved.torque_i, lub::scaled(nxs, radius[i]));
+    const lub::Vec3 torque_j = lub::plus(solved.torque_j, lub::scaled(nxs, radius[j]));
+    f[i][0] += change.x, f[i][1] += change.y, f[i][2] += change.z;
+    torque[i][0] += torque_i.x, torque[i][1] += torque_i.y, torque[i][2] += torque_i.z;
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= change.x, f[j][1] -= change.y, f[j][2] -= change.z;
+      torque[j][0] += torque_j.x, torque[j][1] += torque_j.y, torque[j][2] += torque_j.z;
+    }
+    if (tally)
+      tally->tally_film_correction_xyz(i, j, change.x, change.y, change.z, x[i][0] - x[j][0], x[i][1] - x[j][1],
+                                       x[i][2] - x[j][2]);
+  }
+}
+
+double FilmSolveStep::memory_usage() const
+{
+  return links.capacity() * sizeof(lub::FilmLink) + link_record.capacity() * sizeof(int) +
+         (inverse_mass.capacity() + inverse_inertia.capacity() + velocity.capacity() + zero_force.capacity() +
+          increment.capacity()) *
+             sizeof(double);
+}

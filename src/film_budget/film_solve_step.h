@@ -1,0 +1,63 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   The coupled film solve of pair_style lubricated/springdashpot (`limit implicit`,
+   doc/film_solve.rst): after the pair loops, the films of the atoms whose film budget binds
+   (load D > 1) are taken out of the step-exact forces and solved together, implicitly, by the
+   kernel's preconditioned conjugate gradients (lubricated/film_solve.h); the films of atoms
+   within their budget keep the step-exact per-pair form. Called by FilmBudget::finish.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_LUBRICATED_FILM_SOLVE_STEP_H
+#define LMP_LUBRICATED_FILM_SOLVE_STEP_H
+
+#include "pointers.h"
+
+#include "film_budget/film_budget.h"
+#include "lubricated/film_solve.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FilmSolveStep : protected Pointers {
+ public:
+  FilmSolveStep(LAMMPS *lmp, AtomVectorComm &exchange) : Pointers(lmp), exchange(exchange) {}
+
+  void configure(const FilmSolveSettings &settings);
+  // At each run's init: the non-convergence warning may be given again.
+  void start_run() { warned = false; }
+  // Before each evaluation's finish: no solve yet.
+  void clear_counts() { iterations = 0, solved = 0; }
+  int last_iterations() const { return iterations; }
+  int last_solved_films() const { return solved; }    // this rank's
+
+  // The pair loops' records of this step (FilmBudget's): i, j, the film along n, and with shear
+  // films the shear film's force on i (3 per record, else nullptr).
+  struct Records {
+    const int *i, *j;
+    const double *film, *shear;
+    int count;
+  };
+  // The films of every record with an atom whose scale (owned and ghost) is below 1 are solved
+  // at the velocities the evaluation took, their step-exact forces replaced by the solved ones.
+  void solve(const Records &records, const double *scale, const FilmBudget::TypeTables &tables,
+             const FilmBudget::StepInputs &step, FilmBudget::Tally *tally);
+
+  double memory_usage() const;
+
+ private:
+  AtomVectorComm &exchange;
+  lubricated::FilmSolveOptions options;
+  lubricated::FilmSolver solver;
+  bool warned = false;
+  int iterations = 0, solved = 0;
+  std::vector<lubricated::FilmLink> links;    // solved here first, then (newton off) the others' copies
+  std::vector<int> link_record;               // each link's record
+  std::vector<double> inverse_mass, inverse_inertia, velocity, zero_force, increment;
+  int collect_links(const Records &records, const double *scale, const FilmBudget::TypeTables &tables);
+  void gather_atoms(const FilmBudget::StepInputs &step);
+  void apply_solved_films(const Records &records, FilmBudget::Tally *tally);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,43 @@
+// A pair's films as one link of the coupled film solve (film_solve.h, doc/film_solve.rst): the
+// normal film's coefficient c_n (Lubrication::damping) and the shear film's raw coefficient c_t
+// at the step's gap. The engines' pair loops apply the films step-exact; where a sphere's film
+// budget binds they hand the pair's films to the solve with these coefficients instead.
+#pragma once
+
+#include "lubricated/contact.h"
+#include "lubricated/film_solve.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lubricated {
+
+// The shear film's coefficient c_t = 2 pi mu_f R_e ln(eps_al / max(eps, eps_1)) for
+// eps_2 < eps < eps_al, else 0: the linear damper of tangential.h's shear_film_force before its
+// exact integration over the step (the implicit solve is stable by itself).
+inline double shear_film_coefficient(const TangentialModel &m, double eps, double eps_al, double eps_saturation,
+                                     double eps_release, double reduced_radius)
+{
+  if (!m.film_active() || !(eps < eps_al && eps > eps_release)) return 0.0;
+  return m.two_pi_mu * reduced_radius * std::log(eps_al / std::max(eps, eps_saturation));
+}
+
+// The link of the films of spheres i (radius_i) and j at centre distance r with unit normal n
+// from j to i, for the model of their type pair.
+inline FilmLink pair_film_link(const ContactModel &model, int i, int j, const Vec3 &n, double r, double radius_i,
+                               double radius_j)
+{
+  FilmLink link;
+  link.i = i, link.j = j, link.normal = n;
+  const Lubrication &film = model.normal.lubrication;
+  if (!film.active()) return link;
+  const FilmRadius radius = film_radius_pair(radius_i, radius_j);
+  const double eps = (r - radius_i - radius_j) / radius.value;
+  link.normal_damping = film.damping(eps, radius.value);
+  link.shear_damping =
+      shear_film_coefficient(model.tangential, eps, film.activation_for(radius.value), film.eps_saturation,
+                             film.eps_release, radius_i * radius_j / (radius_i + radius_j));
+  return link;
+}
+
+}    // namespace lubricated

@@ -1,0 +1,246 @@
+"""The coupled film solve (`pair_style lubricated/springdashpot limit implicit`, issue 45,
+doc/film_solve.rst): an isolated collision keeps its step-exact films (no load exceeds 1, the
+solve is never taken), dense wet beds at low St never gain energy with the films of the
+spheres over budget solved together, 1 and 2 ranks agree to the solver's tolerance, bad
+keywords end in an ERROR naming them, and a restart keeps the mode.
+
+Scenes: tools/dense_scenes.py (256 spheres on an fcc lattice, every gap in the film, St =
+5.6e-3 at mu_f = 1 Pa s; the thermo rows gain the solve's iterations and solved films, compute
+pair's 3rd and 4th values), and the polydisperse packings of test_dense_packings.py (radii
+1:10, its fixture and energy criteria), on wet walls too (whose films keep the budget's
+scaling). Newton pair off and 2 ranks solve each film once; compute pressure and the sum of
+compute stress/atom see the solved films alike.
+"""
+import numpy as np
+import pytest
+
+import dense_scenes
+
+ROUND_OFF = 1e-12
+
+SOLVE_THERMO = ("thermo_style custom step atoms ke c_rot pe v_e",
+                "compute solve all pair lubricated/springdashpot\n"
+                "thermo_style custom step atoms ke c_rot pe v_e c_solve[3] c_solve[4]")
+
+
+def with_solve_columns(script):
+    assert SOLVE_THERMO[0] in script
+    return script.replace(*SOLVE_THERMO)
+
+
+def rows(log):
+    """Thermo rows: (step, atoms, energy, iterations, solved films)."""
+    out = []
+    for line in log.splitlines():
+        r = line.split()
+        if len(r) == 8 and r[0].isdigit() and r[1].isdigit():
+            out.append((int(r[0]), int(r[1]), float(r[5]), float(r[6]), float(r[7])))
+    return out
+
+
+def assert_never_gains(log):
+    table = rows(log)
+    energy = [r[2] for r in table]
+    assert len(energy) >= 20 and energy[0] > 0.0
+    assert {r[1] for r in table} == {table[0][1]}    # no atom lost
+    rises = [(b - a) / energy[0] for a, b in zip(energy, energy[1:])]
+    assert max(rises) <= ROUND_OFF, f"energy rose by {max(rises):.3g} E0"
+    assert energy[-1] < energy[0]
+    return table
+
+
+ISOLATED = dense_scenes.HEADER + """region box block -0.01 0.01 -0.01 0.01 -0.01 0.01
+create_box 1 box
+create_atoms 1 single -0.00106 0 0
+create_atoms 1 single 0.00106 0.0003 0
+set group all diameter 0.002 density 2500
+velocity all set 0 0 0
+set atom 1 vx 0.1 omega 0 0 20
+set atom 2 vx -0.1
+pair_style lubricated/springdashpot limit {limit}
+pair_coeff * * 0.9 ncontact 8 viscosity 1e-3 activation 0.1 friction 0.3 shearfilm yes
+neighbor 0.0002 bin
+neigh_modify delay 0 every 1 check yes
+fix nve all nve/sphere
+timestep 2e-6
+compute solve all pair lubricated/springdashpot
+thermo_style custom step c_solve[3] c_solve[4]
+thermo 100
+run 1500
+print "RESULT a $(vx[1]:%.17g) $(vy[1]:%.17g) $(y[1]:%.17g) $(x[1]:%.17g)"
+print "RESULT b $(vx[2]:%.17g) $(vy[2]:%.17g) $(y[2]:%.17g) $(x[2]:%.17g)"
+"""
+
+
+def test_isolated_collision_is_unchanged(lmp):
+    """A wet oblique collision with friction and the shear film (St ~ 100): bit-identical with
+    limit implicit and limit atom; the spheres did collide and rebound."""
+    atom = lmp(ISOLATED.replace("{limit}", "atom"))
+    implicit = lmp(ISOLATED.replace("{limit}", "implicit"))
+    assert "(limit implicit)" in lmp.log
+    assert implicit["a"] == atom["a"] and implicit["b"] == atom["b"]
+    assert atom["a"][0] < 0.0 < atom["b"][0]    # rebound
+
+
+@pytest.mark.parametrize("extra", ["", "friction 0.3 shearfilm yes"])
+def test_dense_bed_never_gains_energy(lmp, extra):
+    """mu_f = 1 Pa s (St 5.6e-3), dt = 1e-6 s: the budget binds on every sphere (limit atom
+    scales the films there); with limit implicit the films are solved, and the energy sampled
+    every 10 steps never rises."""
+    lmp(with_solve_columns(dense_scenes.fcc(1.0, 1e-6, steps=200, limit="implicit", extra=extra)))
+    table = assert_never_gains(lmp.log)
+    assert all(r[3] > 0 and r[4] > 0 for r in table[1:])    # the solve is taken, every sample
+    assert "WARNING" not in lmp.log
+
+
+def test_one_and_two_ranks_agree(lmp):
+    """tolerance 1e-12: the final energies of 1 and 2 ranks agree (the solve's relative residual
+    bounds the velocity error by the tolerance times the kick)."""
+    finals = []
+    for nprocs in (1, 2):
+        script = dense_scenes.fcc(1.0, 1e-6, steps=100, loop="geom", limit="implicit tolerance 1e-12")
+        final = lmp(with_solve_columns(script), nprocs=nprocs)["final"]
+        assert dense_scenes.ranks(lmp.log) == {nprocs}
+        assert final[1] == 256
+        assert rows(lmp.log)[-1][4] > 0
+        finals.append(final[0])
+    assert finals[1] == pytest.approx(finals[0], rel=1e-9)
+
+
+def test_iteration_limit_warns_once(lmp):
+    """iterations 1 cannot reach the tolerance: one WARNING naming tolerance and iterations."""
+    lmp(with_solve_columns(dense_scenes.fcc(1.0, 1e-6, steps=20, limit="implicit iterations 1")))
+    warnings = [line for line in lmp.log.splitlines() if line.startswith("WARNING") and "film solve" in line]
+    assert len(warnings) == 1
+    assert "tolerance 1e-08" in warnings[0] and "iterations 1" in warnings[0]
+
+
+BAD = {
+    "tolerance 0": "tolerance = 0 is not allowed (a number in (0, 1))",
+    "tolerance -1": "tolerance = -1 is not allowed (a number in (0, 1))",
+    "tolerance 2": "tolerance = 2 is not allowed (a number in (0, 1))",
+    "iterations 0": "iterations = 0 is not allowed (an integer from 1 to 1e9)",
+    "iterations 2.5": "iterations = 2.5 is not allowed",
+    "tolerance": "keyword tolerance needs a value",
+    "tolerances 1e-6": "unknown keyword 'tolerances'",
+}
+
+
+@pytest.mark.parametrize("words", list(BAD))
+def test_bad_keywords(lmp, words):
+    script = dense_scenes.fcc(1.0, 1e-6, steps=1, limit="implicit " + words)
+    lmp(script, check=False)
+    assert "ERROR" in lmp.log and BAD[words] in lmp.log
+
+
+def test_solve_keywords_need_limit_implicit(lmp):
+    lmp(dense_scenes.fcc(1.0, 1e-6, steps=1, limit="atom tolerance 1e-6"), check=False)
+    assert "tolerance and iterations belong to limit implicit" in lmp.log
+
+
+def test_restart_keeps_the_mode(lmp):
+    """write_restart after 10 steps with limit implicit tolerance 1e-10 iterations 1; a new
+    process that reads it (no pair_style command) solves the films with both settings: its
+    warning names them."""
+    first = dense_scenes.split(dense_scenes.fcc(1.0, 1e-6, steps=20, limit="implicit tolerance 1e-10 iterations 1"),
+                               "run 10", "write_restart mid.restart")
+    lmp(with_solve_columns(first))
+    lmp(with_solve_columns(dense_scenes.restarted(1e-6, 10)))
+    assert "(limit implicit)" in lmp.log
+    assert rows(lmp.log)[-1][4] > 0
+    warning = next(line for line in lmp.log.splitlines() if line.startswith("WARNING") and "film solve" in line)
+    assert "tolerance 1e-10" in warning and "iterations 1 " in warning
+
+
+def test_newton_off_matches_newton_on(lmp):
+    """With newton pair off each film with a ghost partner is recorded on both ranks and solved
+    by one: 1 and 2 ranks with newton off give newton on's final energy (tolerance 1e-12; 30
+    steps, the energy 1e-6 of E0: the films are summed in another order)."""
+    script = dense_scenes.fcc(1.0, 1e-6, steps=30, loop="geom", limit="implicit tolerance 1e-12")
+    reference = lmp(script)["final"][0]
+    off = script.replace("newton on", "newton off")
+    for nprocs in (1, 2):
+        final = lmp(with_solve_columns(off), nprocs=nprocs)["final"]
+        assert dense_scenes.ranks(lmp.log) == {nprocs}
+        assert rows(lmp.log)[-1][4] > 0
+        assert final[0] == pytest.approx(reference, rel=1e-10)
+
+
+STRESS = """compute sa all stress/atom NULL pair
+compute ssum all reduce sum c_sa[1] c_sa[2] c_sa[3] c_sa[4] c_sa[5] c_sa[6]
+compute p all pressure NULL pair
+variable pxy_atoms equal -c_ssum[4]/vol
+variable pxx_atoms equal -c_ssum[1]/vol
+run 0
+print "RESULT stress $(c_p[1]:%.17g) $(v_pxx_atoms:%.17g) $(c_p[4]:%.17g) $(v_pxy_atoms:%.17g)"
+"""
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_solved_films_are_in_the_virial(lmp, nprocs):
+    """compute pressure (the global virial, f.r over owned and ghost atoms) and the sum of
+    compute stress/atom (each pair's tally) agree with the solved films, which dominate the
+    stress of the bed: both see every solved film force."""
+    script = dense_scenes.fcc(1.0, 1e-6, steps=20, loop="geom", limit="implicit",
+                              extra="friction 0.3 shearfilm yes")
+    stress = lmp(script.replace("run 20\n", "run 20\n" + STRESS), nprocs=nprocs)["stress"]
+    assert stress[1] == pytest.approx(stress[0], rel=1e-9)
+    assert stress[3] == pytest.approx(stress[2], rel=1e-9, abs=1e-9 * abs(stress[0]))
+
+
+# ------------------------------------------------------------------------------------------
+# The polydisperse dense packings of test_dense_packings.py (radii 1:10) with limit implicit:
+# their energy criteria, and the solve taken.
+# ------------------------------------------------------------------------------------------
+
+from test_dense_packings import (ROUND_OFF as STRICT, assert_bounded, dt_for, mu_for,  # noqa: E402,F401
+                                 packings, run_energy, walled_scene, with_velocities)
+import dense_packings as dp  # noqa: E402
+
+
+def implicit_was_solved(log):
+    """The mode logged. (The 1:10 beds with contacts may warn: at St 1e-3 a few steps' solves
+    stop at 200 iterations with a relative residual of 1e-8 to 3e-7; the energy criteria hold.)"""
+    assert "(limit implicit)" in log
+
+
+def test_gapped_polydisperse_bed_without_contact_never_gains(lmp, packings):
+    """Strict (films alone, St 1e-3, dt 5e-4 R_min/U, 500 steps): ke + erot never rises beyond
+    1e-12 E0, and the films dissipate."""
+    script = dp.energy_scene(with_velocities(lmp, packings["gapped"]), mu_for(1e-3), dt_for(5e-4), 500, every=1,
+                             limit="implicit")
+    rows, log = run_energy(lmp, script)
+    implicit_was_solved(log)
+    assert len(rows) == 501 and set(rows[:, 1]) == {dp.N_ATOMS}
+    assert not rows[:, 4].any()
+    energy = rows[:, 2] + rows[:, 3]
+    assert np.diff(energy).max() <= STRICT * energy[0]
+    assert energy[-1] < 0.5 * energy[0]
+
+
+@pytest.mark.parametrize("bed", ["gapped", "preloaded"])
+def test_polydisperse_bed_with_contacts_never_gains(lmp, packings, bed):
+    """Bounded (test_dense_packings.py): St 1e-3, dt 5e-3 R_min/U, 500 steps."""
+    script = dp.energy_scene(with_velocities(lmp, packings[bed]), mu_for(1e-3), dt_for(5e-3), 500, every=10,
+                             limit="implicit")
+    rows, log = run_energy(lmp, script)
+    implicit_was_solved(log)
+    energy = assert_bounded(rows, rows[0, 2] + rows[0, 3] + rows[0, 4])
+    assert energy[-1] <= energy[0]
+
+
+def test_bed_settling_on_wet_walls_never_gains(lmp, packings):
+    """The walled bed with the shear film on pairs and walls (mu_f 10 Pa s, 5e-5 s, 1000 steps):
+    the pairs' films of spheres over budget solved, the walls' films scaled by the budget."""
+    rows, log = run_energy(lmp, walled_scene(lmp, packings, 10.0, 5e-5, 1000, limit="implicit",
+                                             extra="shearfilm yes"))
+    implicit_was_solved(log)
+    energy = assert_bounded(rows, rows[0, 2] + rows[0, 3] + rows[0, 4] + rows[0, 5])
+    assert rows[-1, 5] < rows[0, 5]
+    assert energy[-1] < energy[0]
+
+
+def test_midpoint_integrator_is_refused(lmp):
+    script = dense_scenes.fcc(1.0, 1e-6, steps=1, limit="implicit")
+    lmp(script.replace("fix nve all nve/sphere", "fix nve all nve/sphere/midpoint"), check=False)
+    assert "limit implicit is not available with fix nve/sphere/midpoint" in lmp.log
