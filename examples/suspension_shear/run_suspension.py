@@ -2,8 +2,9 @@
 solid fractions, against the experimental laws of dense non-Brownian suspensions.
 
 Each run shears 300 bidisperse spheres (radii a and 1.4 a, equal volumes, rho_p = rho_f) at
-St = rho gdot a^2 / eta_f = 1e-3 with the films solved together where the film budget binds
-(limit implicit), friction mu_c 0.5, and averages the stress over the second half of the strain:
+St = rho gdot a^2 / eta_f = 1e-3 (gdot t_c = 1e-3, N_c 16) to a strain of 1 with the films solved
+together where the film budget binds (limit implicit), friction mu_c 0.5 (and 0 with
+--frictionless), and averages the stress over the second half of the strain:
 the friction coefficient mu = sigma_xy / P, the viscous number J = eta_f gdot / P and the
 relative viscosity eta_s = 1 + sigma_xy / (eta_f gdot). One solid fraction is run again with the
 film budget alone (limit atom) to show what the solve changes.
@@ -29,7 +30,7 @@ import lammps_run  # noqa: E402
 
 MU_1, MU_2, J_0, PHI_M = 0.32, 0.7, 0.005, 0.585     # Boyer, Guazzelli & Pouliquen (2011)
 PHIS = [0.45, 0.50, 0.54, 0.56]
-STRAIN = 1.5          # shear strain of each run; the stress is averaged over its second half
+STRAIN = 1.0          # shear strain of each run; the stress is averaged over its second half
 COLUMNS = ["phi", "mu_c", "limit", "strain", "St", "J", "mu", "eta_s", "P", "sigma_xy",
            "iterations", "seconds"]
 
