@@ -117,7 +117,7 @@ shear-cell: build
 settling-sphere: build
 	$(PY) examples/settling_sphere/plot_settling_sphere.py --out $(BUILD)/settling_sphere
 
-# A dense suspension in simple shear at four solid fractions (St 1e-3, limit implicit): mu(J),
+# A dense suspension in simple shear at five solid fractions (St 1e-3, limit implicit): mu(J),
 # phi(J) and eta_s(phi) beside the laws of Boyer, Guazzelli & Pouliquen (2011), CSV + PNG.
 suspension: build
 	$(PY) examples/suspension_shear/run_suspension.py --out $(BUILD)/suspension

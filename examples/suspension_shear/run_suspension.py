@@ -29,7 +29,7 @@ sys.path.insert(0, str(ROOT / "tools"))
 import lammps_run  # noqa: E402
 
 MU_1, MU_2, J_0, PHI_M = 0.32, 0.7, 0.005, 0.585     # Boyer, Guazzelli & Pouliquen (2011)
-PHIS = [0.45, 0.50, 0.54, 0.56]
+PHIS = [0.45, 0.50, 0.54, 0.56, 0.58]
 STRAIN = 1.0          # shear strain of each run; the stress is averaged over its second half
 COLUMNS = ["phi", "mu_c", "limit", "strain", "St", "J", "mu", "eta_s", "P", "sigma_xy",
            "iterations", "seconds"]
