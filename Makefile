@@ -5,7 +5,7 @@ BUILD  := build
 JOBS   ?= 2
 
 .PHONY: all setup setup-liggghts build demo test test-kernel test-lammps test-liggghts bench format format-check \
-        bench-liggghts bench-beds bench-wet-cost report fluidized-bed settling-sphere rotating-drum liggghts-demo shear-cell \
+        bench-liggghts bench-beds bench-wet-cost report fluidized-bed settling-sphere suspension rotating-drum liggghts-demo shear-cell \
         clean test-versions test-matrix test-openmpi test-pip
 
 all: build
@@ -118,6 +118,11 @@ shear-cell: build
 settling-sphere: build
 	$(PY) examples/settling_sphere/plot_settling_sphere.py --out $(BUILD)/settling_sphere
 	$(PY) examples/settling_sphere/compare_experiments.py --out $(BUILD)/settling_sphere
+
+# A dense suspension in simple shear at five solid fractions (St 1e-3, limit implicit): mu(J),
+# phi(J) and eta_s(phi) beside the laws of Boyer, Guazzelli & Pouliquen (2011), CSV + PNG.
+suspension: build
+	$(PY) examples/suspension_shear/run_suspension.py --out $(BUILD)/suspension
 
 # A dry and a wet rotating drum (fix wall/lubrication zcylinder shear): the dynamic angle of
 # repose and rotating_drum.png (under a minute).
