@@ -252,6 +252,7 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
   // not with rigid bodies or immovable atoms, whose velocities the reconstruction does not know.
   continued = step_velocity && step_velocity->continues() && !contact_mass.holds_or_rigid();
   step_velocities_used = !update->setupflag || continued;
+  overlap_check_due = update->setupflag || update->ntimestep % overlap_check_interval == 0;
   if (update->setupflag) network.find_participants();
   if (inverse_mass_on && (neighbor->ago == 0 || update->setupflag)) update_inverse_mass();
   budget.begin_step(list, {models.data(), max_reach.data(), ntypes_alloc + 1});

@@ -163,11 +163,16 @@ class PairLubricatedSpringDashpot : public Pair, public FilmBudgetOwner, private
   template <bool WET, bool TANGENTIAL, bool SPLIT, bool UNIFORM_REACH>
   int select_pairs(int &next, int &nfilm, int limit);
   static constexpr int pairs_per_piece = 4096;    // pass 1's pieces (16 chunks of vector_forces)
-  // The overlap check (lubricated/overlap_check.h): pass 1 marks a piece where a pair overlaps
+  // The overlap check (lubricated/overlap_check.h): any_deep_overlap finds a piece where a pair overlaps
   // by more than overlap_depth of the smaller radius (the warning's fraction, the error's once
   // warned: overlap_warned, reset at init); check_pair_overlaps then names the deepest pair.
   double overlap_depth = 0.1;
-  bool overlap_warned = false, overlap_deep = false;
+  bool overlap_warned = false;
+  // Due at a run's set-up and every overlap_check_interval steps: an overlap beyond the limits
+  // builds up over several steps of a contact lasting N_c of them.
+  static constexpr int overlap_check_interval = 4;
+  bool overlap_check_due = false;
+  bool any_deep_overlap(int ncandidate) const;
   void check_pair_overlaps(int ncandidate);
   // What every pair of one eval() reads, gathered once per call.
   struct PairLoop {

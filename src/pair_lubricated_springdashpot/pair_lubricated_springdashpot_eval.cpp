@@ -80,9 +80,6 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
   const double *reach_table = max_reach.data();
   const int stride = ntypes_alloc + 1;
   const double reach_all = reach_table[stride + 1];
-  const double *radius = atom->radius;
-  const double depth = overlap_depth;
-  int deep = 0;    // a pair overlaps by more than `depth` of the smaller radius (the overlap check)
   // The counts in locals: the reference nfilm, which the lists' stores might alias, would keep
   // its count in memory, a store-to-load chain through every entry.
   // 64-bit: indices without a sign extension per entry.
@@ -93,7 +90,7 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
     const int jnum = numneigh[i];
     if ((ncandidate + jnum > limit || nfilm_here + jnum > limit) && ncandidate + nfilm_here > 0) break;
     const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
-    const double radi_moved = grown[i], radi = radius[i];
+    const double radi_moved = grown[i];
     const double *reach_row = reach_table + type[i] * stride;
     const int *jlist = firstneigh[i];
     const char *touched = TANGENTIAL && history ? history->touched(i) : nullptr;
@@ -129,14 +126,29 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
         nfilm_here += keep & !(rsq < touch * touch) & !(TANGENTIAL && touched && touched[jj]);
       }
       ncandidate += keep;
-      const double deep_within = lub::overlap_distance(radi, radius[j], depth);
-      deep |= rsq < deep_within * deep_within;    // such a pair is in contact, hence kept
     }
   }
-  overlap_deep = deep != 0;
   next = ii;
   nfilm = static_cast<int>(nfilm_here);
   return static_cast<int>(ncandidate);
+}
+
+// Whether a pair among this piece's candidates overlaps by more than overlap_depth of the smaller
+// radius (such a pair is in contact, hence a candidate): a branch-free scan, on the steps the
+// check is due (overlap_check_interval) so that other steps pay nothing for it.
+bool PairLubricatedSpringDashpot::any_deep_overlap(int ncandidate) const
+{
+  const double *x = atom->x[0], *radius = atom->radius;
+  const int *ci = loop_lists.candidate_i.data(), *cj = loop_lists.candidate_j.data();
+  const double depth = overlap_depth;
+  int deep = 0;
+  for (int c = 0; c < ncandidate; c++) {
+    const int i = ci[c], j = cj[c];
+    const double dx = x[3 * i] - x[3 * j], dy = x[3 * i + 1] - x[3 * j + 1], dz = x[3 * i + 2] - x[3 * j + 2];
+    const double within = lub::overlap_distance(radius[i], radius[j], depth);
+    deep |= dx * dx + dy * dy + dz * dz < within * within;
+  }
+  return deep != 0;
 }
 
 // Pass 1 found a pair among this piece's candidates overlapping by more than overlap_depth of
@@ -386,7 +398,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     if (network_due)
       network.check({loop_lists.candidate_i.data(), loop_lists.candidate_j.data(), ncandidate,
                      inverse_mass_on ? inverse_mass.data() : nullptr, midpoint, coeffs.data()});
-    if (overlap_deep) check_pair_overlaps(ncandidate);
+    if (overlap_check_due && any_deep_overlap(ncandidate)) check_pair_overlaps(ncandidate);
     if (loop.budget) budget.reserve_records(ncandidate + nfilm);
     if constexpr (SPLIT && !TANGENTIAL) {
       vector_forces<false>(ncandidate, nfilm, v, loop.omega, evaluate);
