@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# bench/mpi_scaling.py on a machine without the project's venv (the 16-core machine lent to
-# some sessions): `pack` here bundles the wheel's lmp and MPICH, the plugin and the cached bed
+# bench/mpi_scaling.py on a machine without the project's venv (a 16-core machine, e.g. a
+# cluster node): `pack` here bundles the wheel's lmp and MPICH, the plugin and the cached bed
 # into .devbench/b.tar.xz (about 25 MB; .devbench is git-ignored through .git/info/exclude);
 # `run` there unpacks it and runs the scaling with LUBRICATED_LMP, LUBRICATED_MPIEXEC and
 # LUBRICATED_PLUGIN (tools/lammps_run.py), writing mpi_scaling.md, log.txt and runs.csv to $OUT.
