@@ -58,7 +58,7 @@ void FixWallLubricationBase::init_model(const char *style, const std::string &wh
   pair_budget = budget_owner ? &budget_owner->film_budget() : nullptr;
   contact_mass.init(style, !pair_budget);    // the pair style logs them where there is one
   films_pending = false;
-  overlap_warned = false;
+  overlap_warned = overlap_deep_warned = false;
   find_gravity();
 }
 

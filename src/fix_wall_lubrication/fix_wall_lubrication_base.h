@@ -174,10 +174,10 @@ class FixWallLubricationBase : public Fix, public FilmBudgetParticipant, public 
   // onto them, their loads become the non-negative least-squares solution of
   // sum b_k n_k = -g; otherwise each keeps its own -g . n_k.
   void share_gravity_loads(int i, const lubricated::Vec3 *normal, const double *gap, double *load, int count) const;
-  // The overlap check (lubricated/overlap_check.h): an overlap beyond overlap_error_fraction of
-  // the sphere's radius, or a centre gone behind the wall after a contact (through), stops the
-  // run; beyond overlap_warning_fraction it warns once per run (overlap_warned, reset at init).
-  bool overlap_warned = false;
+  // The overlap check (lubricated/overlap_check.h): a centre gone behind the wall after a
+  // contact (through) stops the run; an overlap beyond overlap_warning_fraction, and beyond
+  // overlap_error_fraction, of the sphere's radius warns once per run each (reset at init).
+  bool overlap_warned = false, overlap_deep_warned = false;
   void check_overlap(int i, double gap, bool through);
   // One evaluation of the walls: its films deferred to post_force where asked (a wet run).
   void compute_walls(bool defer_films);

@@ -167,7 +167,7 @@ class PairLubricatedSpringDashpot : public Pair, public FilmBudgetOwner, private
   // by more than overlap_depth of the smaller radius (the warning's fraction, the error's once
   // warned: overlap_warned, reset at init); check_pair_overlaps then names the deepest pair.
   double overlap_depth = 0.1;
-  bool overlap_warned = false;
+  bool overlap_warned = false, overlap_deep_warned = false;
   // Due at a run's set-up and every overlap_check_interval steps: an overlap beyond the limits
   // builds up over several steps of a contact lasting N_c of them.
   static constexpr int overlap_check_interval = 4;

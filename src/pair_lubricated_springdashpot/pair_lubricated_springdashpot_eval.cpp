@@ -151,9 +151,9 @@ bool PairLubricatedSpringDashpot::any_deep_overlap(int ncandidate) const
   return deep != 0;
 }
 
-// Pass 1 found a pair among this piece's candidates overlapping by more than overlap_depth of
-// the smaller radius: the deepest pair of movable atoms, as an ERROR on this rank (the run
-// stops) or a WARNING once per run (then only overlaps beyond the error's fraction are looked for).
+// A pair among this piece's candidates overlaps by more than overlap_depth of the smaller
+// radius: the deepest pair of movable atoms as a WARNING, once per run for each of the two
+// limits (after the first, only overlaps beyond the second are looked for).
 __attribute__((noinline)) void PairLubricatedSpringDashpot::check_pair_overlaps(int ncandidate)
 {
   double **x = atom->x;
@@ -176,9 +176,13 @@ __attribute__((noinline)) void PairLubricatedSpringDashpot::check_pair_overlaps(
                                       atom->tag[i], atom->tag[j], ti, tj);
   const std::string text = lub::overlap_message(who, deepest_gap, std::min(radius[i], radius[j]), largest,
                                                 coeffs[index(ti, tj)], update->dt, false);
-  if (lub::overlap_level(largest) == lub::OverlapLevel::error) error->one(FLERR, "{}", text);
-  if (overlap_warned) return;
+  // A pair warns, beyond either limit once per run: a sphere deep in a partner is not lost (dense
+  // 1:10 beds overlap so and stay stable, the network check guards them), a sphere through a
+  // wall is (the walls' ERROR).
+  const bool beyond_error = lub::overlap_level(largest) == lub::OverlapLevel::error;
+  if (beyond_error ? overlap_deep_warned : overlap_warned) return;
   overlap_warned = true;
+  overlap_deep_warned = beyond_error;
   overlap_depth = lub::overlap_error_fraction;
   error->warning(FLERR, "{}", text);
 }
@@ -398,7 +402,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
     if (network_due)
       network.check({loop_lists.candidate_i.data(), loop_lists.candidate_j.data(), ncandidate,
                      inverse_mass_on ? inverse_mass.data() : nullptr, midpoint, coeffs.data()});
-    if (overlap_check_due && any_deep_overlap(ncandidate)) check_pair_overlaps(ncandidate);
+    if (overlap_check_due && !overlap_deep_warned && any_deep_overlap(ncandidate)) check_pair_overlaps(ncandidate);
     if (loop.budget) budget.reserve_records(ncandidate + nfilm);
     if constexpr (SPLIT && !TANGENTIAL) {
       vector_forces<false>(ncandidate, nfilm, v, loop.omega, evaluate);

@@ -39,7 +39,7 @@ void PairLubricatedSpringDashpot::init_style()
   check_atom_style();
   network.start_run();    // set_loads (init_one) turns it on
   const TypePairNeeds needs = settle_coefficients();
-  overlap_warned = false, overlap_depth = lub::overlap_warning_fraction;
+  overlap_warned = overlap_deep_warned = false, overlap_depth = lub::overlap_warning_fraction;
   keep_contact_history(needs.friction);
   if (comm->me == 0)
     for (const auto &msg : needs.advice)
