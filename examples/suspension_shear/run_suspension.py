@@ -2,7 +2,7 @@
 solid fractions, against the experimental laws of dense non-Brownian suspensions.
 
 Each run shears 300 bidisperse spheres (radii a and 1.4 a, equal volumes, rho_p = rho_f) at
-St = rho gdot a^2 / eta_f = 1e-3 (gdot t_c = 1e-3, N_c 16) to a strain of 1 with the films solved
+St = rho gdot a^2 / eta_f = 1e-3 (gdot t_c = 1e-3, N_c 8) to a strain of 1 with the films solved
 together where the film budget binds (limit implicit), friction mu_c 0.5 (and 0 with
 --frictionless), and averages the stress over the second half of the strain:
 the friction coefficient mu = sigma_xy / P, the viscous number J = eta_f gdot / P and the

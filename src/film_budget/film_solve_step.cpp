@@ -61,7 +61,6 @@ void FilmSolveStep::gather_atoms(const FilmBudget::StepInputs &step)
   const double *rmass = atom->rmass, *radius = atom->radius;
   inverse_mass.resize(nall), inverse_inertia.resize(nall);
   velocity.resize(lub::film_dofs * nall), increment.resize(lub::film_dofs * nall);
-  zero_force.assign(lub::film_dofs * nall, 0.0);    // Lie splitting: the other forces stay explicit
   for (int k = 0; k < nall; k++) {
     inverse_mass[k] = step.inverse_mass ? step.inverse_mass[k] : 1.0 / rmass[k];
     inverse_inertia[k] = inverse_mass[k] > 0.0 ? 1.0 / lub::sphere_inertia(rmass[k], radius[k]) : 0.0;
@@ -71,11 +70,46 @@ void FilmSolveStep::gather_atoms(const FilmBudget::StepInputs &step)
   }
 }
 
+// F of the solve, per atom: the forces and torques the pair loops gave this evaluation (the
+// contacts, the films outside the solve) less the step-exact films of the solved links, summed on
+// the owners. With F = 0 a solved film would meet a contact's push of this step only at the next
+// evaluation, as a separating velocity it resists: at stiff contacts that pulls the pair
+// together. The forces of fixes (drag, gravity) come after the pair style and stay explicit.
+void FilmSolveStep::gather_other_forces(const Records &records)
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost, newton_pair = force->newton_pair;
+  double **f = atom->f, **torque = atom->torque;
+  const double *radius = atom->radius;
+  other_force.assign(lub::film_dofs * nall, 0.0);
+  // Without newton the ghosts' force entries are not the pair style's (not even cleared).
+  const int accumulated = newton_pair ? nall : nlocal;
+  for (int k = 0; k < accumulated; k++)
+    for (int d = 0; d < 3; d++)
+      other_force[lub::film_dofs * k + d] = f[k][d], other_force[lub::film_dofs * k + 3 + d] = torque[k][d];
+  for (std::size_t k = 0; k < links.size(); k++) {
+    const lub::FilmLink &link = links[k];
+    const int r = link_record[k], i = link.i, j = link.j;
+    const lub::Vec3 shear = records.shear
+                                ? lub::Vec3{records.shear[3 * r], records.shear[3 * r + 1], records.shear[3 * r + 2]}
+                                : lub::Vec3{};
+    const lub::Vec3 applied = lub::plus(lub::scaled(link.normal, records.film[r]), shear);
+    const lub::Vec3 nxs = lub::cross(link.normal, shear);    // the applied torques were -R n x F_t
+    lub::film_add(&other_force[lub::film_dofs * i], applied, -1.0);
+    lub::film_add(&other_force[lub::film_dofs * i + 3], nxs, radius[i]);
+    if (newton_pair || j < nlocal) {
+      lub::film_add(&other_force[lub::film_dofs * j], applied, 1.0);
+      lub::film_add(&other_force[lub::film_dofs * j + 3], nxs, radius[j]);
+    }
+  }
+  if (newton_pair) exchange.reverse(other_force.data(), lub::film_dofs);
+}
+
 void FilmSolveStep::solve(const Records &records, const double *scale, const FilmBudget::TypeTables &tables,
                           const FilmBudget::StepInputs &step, FilmBudget::Tally *tally)
 {
   const int n_solved = collect_links(records, scale, tables);
   gather_atoms(step);
+  gather_other_forces(records);
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   lub::FilmAtoms atoms;
   atoms.owned = nlocal, atoms.total = nall;
@@ -88,7 +122,7 @@ void FilmSolveStep::solve(const Records &records, const double *scale, const Fil
     MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_DOUBLE, MPI_SUM, world);
   };
   const lub::FilmSolveResult result = solver.solve(atoms, links.data(), n_solved, step.kick_time, velocity.data(),
-                                                   zero_force.data(), increment.data(), options, film_comm);
+                                                   other_force.data(), increment.data(), options, film_comm);
   iterations = result.iterations, solved = n_solved;
   if (!result.converged && !warned) {
     warned = true;
@@ -144,7 +178,7 @@ void FilmSolveStep::apply_solved_films(const Records &records, FilmBudget::Tally
 double FilmSolveStep::memory_usage() const
 {
   return links.capacity() * sizeof(lub::FilmLink) + link_record.capacity() * sizeof(int) +
-         (inverse_mass.capacity() + inverse_inertia.capacity() + velocity.capacity() + zero_force.capacity() +
+         (inverse_mass.capacity() + inverse_inertia.capacity() + velocity.capacity() + other_force.capacity() +
           increment.capacity()) *
              sizeof(double);
 }

@@ -52,9 +52,10 @@ class FilmSolveStep : protected Pointers {
   int iterations = 0, solved = 0;
   std::vector<lubricated::FilmLink> links;    // solved here first, then (newton off) the others' copies
   std::vector<int> link_record;               // each link's record
-  std::vector<double> inverse_mass, inverse_inertia, velocity, zero_force, increment;
+  std::vector<double> inverse_mass, inverse_inertia, velocity, other_force, increment;
   int collect_links(const Records &records, const double *scale, const FilmBudget::TypeTables &tables);
   void gather_atoms(const FilmBudget::StepInputs &step);
+  void gather_other_forces(const Records &records);
   void apply_solved_films(const Records &records, FilmBudget::Tally *tally);
 };
 

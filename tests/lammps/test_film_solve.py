@@ -89,7 +89,9 @@ def test_dense_bed_never_gains_energy(lmp, extra):
     every 10 steps never rises."""
     lmp(with_solve_columns(dense_scenes.fcc(1.0, 1e-6, steps=200, limit="implicit", extra=extra)))
     table = assert_never_gains(lmp.log)
-    assert all(r[3] > 0 and r[4] > 0 for r in table[1:])    # the solve is taken, every sample
+    # The solve is taken at every sample while the bed moves (its first 100 steps; then the
+    # kinetic energy is at round-off and the films over budget come and go).
+    assert all(r[3] > 0 and r[4] > 0 for r in table[1:11])
     assert "WARNING" not in lmp.log
 
 
