@@ -3,8 +3,9 @@ time step and integration scheme, for dry and wet particle-wall and particle-par
 
     .venv/bin/python bench/restitution_report.py [--out build/report] [--quick]
 
-Writes report.csv, pareto.png (error against LAMMPS loop time), stability.png (stable or
-not over St and c dt / m_e) and summary.md to --out. Every point is a real LAMMPS run of
+Writes report.csv, pareto.png (error against LAMMPS loop time: per scheme a line through the
+settings no other setting beats in both, labelled by N_c, over the faint cloud of all of them),
+stability.png (stable or not over St and c dt / m_e) and summary.md to --out. Every point is a real LAMMPS run of
 the plugin (tools/scenes.py builds the inputs). Errors: |e - e_d| / e_d dry, and
 max over St of |e/e_d - exp(-35/St)| wet.
 """
@@ -105,17 +106,34 @@ def stability_map(scratch, stokes, cdtm):
     return rows
 
 
+def pareto_front(points):
+    """The points no other point beats in both run time and error, by run time: the best error a
+    scheme reaches for a given cost (a line a reader can follow instead of the cloud of settings)."""
+    front = []
+    for point in sorted(points, key=lambda r: (r["loop_time_s"], r["error"])):
+        if not front or point["error"] < front[-1]["error"]:
+            front.append(point)
+    return front
+
+
 def plot_pareto(rows, path):
     fig, axes = plt.subplots(2, 2, figsize=(11, 8), sharex=True)
     markers = dict(zip(SCHEMES, "os^dv"))
     for ax, (fluid, scene) in zip(axes.flat, [(f, s) for f in ("dry", "wet") for s in ("wall", "pair")]):
-        for scheme in SCHEMES:
+        for k, scheme in enumerate(SCHEMES):
             pts = [r for r in rows if r["scheme"] == scheme and r["fluid"] == fluid and r["scene"] == scene
                    and r["stable"]]
+            colour = f"C{k}"
             ax.loglog([r["loop_time_s"] for r in pts], [max(r["error"], 1e-16) for r in pts],
-                      markers[scheme], alpha=0.7, label=scheme)
+                      markers[scheme], color=colour, alpha=0.2, ms=4)
+            front = pareto_front(pts)
+            ax.loglog([r["loop_time_s"] for r in front], [max(r["error"], 1e-16) for r in front],
+                      markers[scheme] + "-", color=colour, label=scheme)
+            for r in front:
+                ax.annotate(str(r["ncontact"]), (r["loop_time_s"], max(r["error"], 1e-16)), fontsize=6,
+                            color=colour, textcoords="offset points", xytext=(3, 3))
         ax.axhline(0.01 if fluid == "dry" else 0.05, color="k", lw=0.8, ls="--")
-        ax.set_title(f"{fluid}, particle-{scene}")
+        ax.set_title(f"{fluid}, particle-{scene}: best error for a run time (labels: N_c)", fontsize=9)
         ax.set_ylabel("|e - e_d| / e_d" if fluid == "dry" else "max |e/e_d - exp(-35/St)|")
         ax.set_xlabel("LAMMPS loop time per setting [s]")
         ax.grid(True, which="both", alpha=0.3)
