@@ -100,6 +100,7 @@ liggghts-demo: setup-liggghts build
 report: build
 	$(PY) bench/restitution_report.py --out $(BUILD)/report
 	$(PY) bench/dense_bed_report.py --out $(BUILD)/report
+	$(PY) bench/suspension_report.py --out $(BUILD)/report
 
 # The 2133-sphere fluidised bed on 2 MPI ranks: dumps and a solid-fraction profile.
 fluidized-bed: build
