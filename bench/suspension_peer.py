@@ -32,12 +32,15 @@ bench/RESULTS.md, 'none' to skip).
 """
 import argparse
 import json
+import re
 import math
 import pathlib
 import shutil
 import statistics
 import subprocess
 import sys
+
+import numpy as np
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tools"))
@@ -100,6 +103,7 @@ fix shear all deform 1 xy erate {gdot} remap v
 variable steps equal round({strain}/({gdot}*dt))
 variable start equal round({transient}/({gdot}*dt))
 fix mean all ave/time {every} 1 {every} {averaged} ave running start ${{start}}
+dump snap all custom $(round(v_steps/20)) {dump} id radius x y z
 thermo_style custom step atoms ke {thermo_extra}
 thermo_modify norm no
 thermo $(round(v_steps/5))
@@ -190,8 +194,8 @@ def peer_coeffs(mu_c):
     return "\n".join(lines)
 
 
-def shear_script(engine, dt, strain, mu_c):
-    """The input of one arm: engine 'plugin' or 'peer', time step dt."""
+def shear_script(engine, dt, strain, mu_c, dump="snap.dump"):
+    """The input of one arm: engine 'plugin' or 'peer', time step dt; snapshots to dump."""
     tc = GTC / GDOT
     if engine == "plugin":
         lines = PLUGIN_ENGINE.format(tol=TOL, e_d=E_D, tc=tc, eta=ETA_F, act=ACTIVATION, sat=SATURATION,
@@ -209,7 +213,7 @@ def shear_script(engine, dt, strain, mu_c):
     newton = "on" if engine == "plugin" else "off"      # lubricateU/poly needs newton pair off
     return prefix + HEADER + SHEAR.format(newton=newton, skin=0.3 * A, dt=dt, engine=lines, gdot=GDOT,
                                           computes=computes, strain=strain, transient=strain / 2, every=20,
-                                          averaged=averaged, thermo_extra=extra, results=results)
+                                          dump=dump, averaged=averaged, thermo_extra=extra, results=results)
 
 
 def shear(work, engine, dt, strain, mu_c, phi, timeout):
@@ -217,13 +221,17 @@ def shear(work, engine, dt, strain, mu_c, phi, timeout):
     name = f"{engine}_dt{dt:.3g}"
     row = {"engine": engine, "dt": dt, "strain": strain}
     try:
-        result, log = lammps_run.run(shear_script(engine, dt, strain, mu_c), work, name=f"in.{name}",
-                                     timeout=timeout)
+        result, log = lammps_run.run(shear_script(engine, dt, strain, mu_c, f"{name}.dump"), work,
+                                     name=f"in.{name}", timeout=timeout)
     except subprocess.TimeoutExpired:
         row["timeout"] = timeout
         return row
+    # the cost: CPU seconds of the loop (its wall time times LAMMPS's 'CPU use'), which a shared
+    # machine's other loads change less than the wall time
     timing = bench_common.parse_log(log)
-    row["seconds"] = timing["seconds"]
+    cpu = re.search(r"([0-9.]+)% CPU use", log)
+    row["wall"] = timing["seconds"]
+    row["seconds"] = timing["seconds"] * (float(cpu.group(1)) / 100.0 if cpu else 1.0)
     if engine == "plugin":
         sxy, p = result["sxy"], result["P"]
         row["sxy_extra"], row["iterations"] = result["sxy_extra"], result["iterations"]
@@ -234,7 +242,52 @@ def shear(work, engine, dt, strain, mu_c, phi, timeout):
         row["sxy_extra"], row["iterations"] = einstein, float("nan")
         row["film_share"] = result["sxy_films"] - einstein
     row.update(eta_s=1.0 + sxy / (ETA_F * GDOT), P=p, mu=sxy / p if p else float("nan"))
+    row["springs_sxy"], row["springs_P"] = spring_stress(work / f"{name}.dump", strain / 2 / (GDOT * dt))
     return row
+
+
+def snapshots(path):
+    """(step, box (lo, hi, xy), radius, x) of each snapshot of a dump 'id radius x y z'."""
+    lines = path.read_text().split("\n")
+    k = 0
+    while k < len(lines) and lines[k].startswith("ITEM: TIMESTEP"):
+        step, count = int(lines[k + 1]), int(lines[k + 3])
+        bounds = [[float(v) for v in lines[k + 5 + d].split()] for d in range(3)]
+        xy = bounds[0][2] if len(bounds[0]) > 2 else 0.0
+        lo = np.array([bounds[0][0] - min(0.0, xy), bounds[1][0], bounds[2][0]])
+        hi = np.array([bounds[0][1] - max(0.0, xy), bounds[1][1], bounds[2][1]])
+        atoms = np.array([[float(v) for v in line.split()] for line in lines[k + 9:k + 9 + count]])
+        yield step, (lo, hi, xy), atoms[:, 1], atoms[:, 2:5]
+        k += 9 + count
+
+
+def spring_stress(path, start):
+    """sigma_xy and P of the normal contact springs alone (k delta along the line of centres, the
+    plugin's k for every pair: both engines have it), averaged over the snapshots from step start:
+    how the stress splits into contacts and films the same way for both engines."""
+    kappa = (math.pi ** 2 + math.log(E_D) ** 2) / (GTC / GDOT) ** 2
+    sums = []
+    for step, (lo, hi, xy), radius, x in snapshots(path):
+        if step < start:
+            continue
+        length = hi - lo
+        d = x[:, None, :] - x[None, :, :]
+        images = np.round(d[..., 1] / length[1])            # the tilted periodic images along y
+        d[..., 0] -= images * xy
+        d[..., 1] -= images * length[1]
+        for axis in (0, 2):
+            d[..., axis] -= np.round(d[..., axis] / length[axis]) * length[axis]
+        dist = np.sqrt((d ** 2).sum(-1))
+        mass = RHO * 4.0 / 3.0 * math.pi * radius ** 3
+        m_e = mass[:, None] * mass[None, :] / (mass[:, None] + mass[None, :])
+        overlap = np.clip(radius[:, None] + radius[None, :] - dist, 0.0, None)
+        np.fill_diagonal(overlap, 0.0)
+        f_over_r = kappa * m_e * overlap / np.where(dist > 0, dist, 1.0)
+        virial = 0.5 * np.einsum("ij,ija,ijb->ab", f_over_r, d, d) / length.prod()
+        sums.append((-virial[0, 1], np.trace(virial) / 3.0))
+    if not sums:
+        return float("nan"), float("nan")
+    return tuple(float(v) for v in np.mean(sums, axis=0))
 
 
 def arms(quick):
@@ -258,10 +311,11 @@ def summarise(rows):
         row = {"engine": key[0], "dt": key[1], "runs": len(sel), "done": len(done),
                "strain": sel[0]["strain"]}
         if done:
-            for k in ("eta_s", "P", "mu", "sxy_extra", "iterations", "film_share"):
+            for k in ("eta_s", "P", "mu", "sxy_extra", "iterations", "film_share", "springs_sxy", "springs_P"):
                 row[k] = statistics.median(r.get(k, float("nan")) for r in done)
             secs = [r["seconds"] for r in done]
-            row.update(seconds=statistics.median(secs), smin=min(secs), smax=max(secs))
+            row.update(seconds=statistics.median(secs), smin=min(secs), smax=max(secs),
+                       wall=statistics.median(r["wall"] for r in done))
         else:
             row["timeout"] = sel[0]["timeout"]
         out.append(row)
@@ -275,21 +329,22 @@ def label(row):
 
 
 def table(phi_rows):
-    lines = ["| phi | arm | eta_s | P [Pa] | mu | not in eta_s | CG it./step | s per strain [min, max] | runs |",
-             "|---|---|---|---|---|---|---|---|---|"]
+    lines = ["| phi | arm | eta_s | P [Pa] | mu | springs: eta, P [Pa] | not in eta_s | CG it./step "
+             "| CPU s per strain [min, max] (wall) | runs |", "|---|---|---|---|---|---|---|---|---|---|"]
     for phi, rows in phi_rows:
         for r in rows:
             if "timeout" in r:
-                lines.append(f"| {phi:.3f} | {label(r)} | - | - | - | - | - | over {r['timeout']} s "
+                lines.append(f"| {phi:.3f} | {label(r)} | - | - | - | - | - | - | over {r['timeout']:.0f} s "
                              f"(time-out) | 0/{r['runs']} |")
                 continue
             per = 1.0 / r["strain"]
             extra = (r["sxy_extra"] / (ETA_F * GDOT))
             what = "drag" if r["engine"] == "plugin" else "Einstein"
             it = f"{r['iterations']:.0f}" if r["engine"] == "plugin" else "-"
+            springs = f"{r['springs_sxy'] / (ETA_F * GDOT):.2f}, {r['springs_P']:.3g}"
             lines.append(f"| {phi:.3f} | {label(r)} | {r['eta_s']:.2f} | {r['P']:.4g} | {r['mu']:.3f} | "
-                         f"{what} {extra:+.2f} | {it} | {r['seconds'] * per:.0f} [{r['smin'] * per:.0f}, "
-                         f"{r['smax'] * per:.0f}] | {r['done']}/{r['runs']} |")
+                         f"{springs} | {what} {extra:+.2f} | {it} | {r['seconds'] * per:.0f} [{r['smin'] * per:.0f}, "
+                         f"{r['smax'] * per:.0f}] ({r['wall'] * per:.0f}) | {r['done']}/{r['runs']} |")
     return lines
 
 
@@ -337,6 +392,8 @@ def main():
     parser.add_argument("--seed", type=int, default=4928)
     parser.add_argument("--engines", nargs="+", default=["plugin", "peer"], choices=["plugin", "peer"],
                         help="run only these; with --keep the others' rows come from OUT")
+    parser.add_argument("--report", action="store_true",
+                        help="run nothing: report the rows kept in OUT (runs of separate processes, one per phi)")
     parser.add_argument("--keep", action="store_true",
                         help="keep OUT: reuse its packings and the rows of the engines not run now")
     parser.add_argument("--out", default=str(ROOT / "build" / "bench-suspension-peer"))
@@ -348,6 +405,9 @@ def main():
     strain = args.strain or (0.3 if args.quick else 0.5)
     repeats = args.repeats or (1 if args.quick else 2)
     out = pathlib.Path(args.out)
+    if args.report:
+        args.engines = []
+        args.keep = True
     if not args.keep:
         shutil.rmtree(out, ignore_errors=True)
     phi_rows = []
@@ -387,9 +447,12 @@ def report(phi_rows, n, strain, repeats, args):
              f"gdot t_c {GTC:g}, e_d {E_D}; one packing per phi (the plugin's compression), sheared from rest "
              f"by both engines to strain {strain:g}, stress averaged over the second half; {repeats} "
              f"repetition(s) interleaved, medians; one rank; LAMMPS {bench_common.lammps_version()}; time-out "
-             f"{args.timeout:.0f} s per run. eta_s = 1 + sigma_xy / (eta_f gdot) and P from the pair "
+             f"{args.timeout:.0f} s per run ({args.probe_timeout:.0f} s for the peer at gdot dt 1e-3). The cost is "
+             "the loop's CPU seconds (wall time x LAMMPS's CPU use), the wall time beside it. eta_s = 1 + sigma_xy / (eta_f gdot) and P from the pair "
              "virial (contacts and films); 'not in eta_s' is the plugin's drag virial or the peer's "
-             "isotropic (Einstein) stresslet, in units of eta_f gdot.", ""]
+             "isotropic (Einstein) stresslet, in units of eta_f gdot. 'springs': sigma_xy / (eta_f gdot) "
+             "and P of the normal contact springs alone (k delta, from 20 snapshots of the averaging window): "
+             "the rest of eta_s - 1 and of P is the films' (and the tangential contacts').", ""]
     lines += table(phi_rows) + [""] + verdict(phi_rows) + [""]
     return "\n".join(lines)
 
