@@ -441,6 +441,35 @@ def main():
         bench_common.write_section(args.results, "suspension-peer", text)
 
 
+DIFFERENCES = """What differs between the two models, with the parameters chosen to match (R = 2 r_i r_j /
+(r_i + r_j), eps = gap / R; for two equal spheres of radius a, R = a):
+
+- Squeeze film: the plugin 6 pi eta_f R u_n [lambda(max(eps, eps_1)) - lambda(eps_al)], lambda =
+  1/(2 eps) - 9/20 ln eps + ...; lubricateU/poly 6 pi eta_f a [1/(4 h) + 9/40 ln(1/h) + O(h ln h)]
+  (h = gap / a, Jeffrey-Onishi coefficients for unequal spheres). The plugin's singular terms are
+  twice the peer's (the paper's lambda applied to the relative velocity,
+  doc/pair_lubricated_springdashpot.rst, "Unequal radii"); the plugin's film vanishes
+  continuously at eps_al, the peer's is cut off with a jump at its cutoff, so between eps of
+  about 0.04 and 0.1 the peer's film is the stronger one, below it the plugin's (up to 2 x).
+- Shear film: the plugin 2 pi eta_f R_e ln(eps_al / max(eps, eps_1)) on the surface slip (R_e
+  = a/2 for equal spheres, the peer's pi eta_f a ln(1/h) shifted by ln eps_al); the peer also has
+  the pump term (relative spin) and rotational drag 8 pi eta_f a^3 against the fluid's vorticity;
+  the plugin's spheres spin freely apart from their films and contacts (fix fluid/drag applies
+  no torque).
+- Near contact: both hold the film at the saturation gap eps_1 = 1e-3 R (the peer's cutinner);
+  the plugin removes it beyond an overlap of 1e-2 R (release), the peer keeps it at any overlap.
+- Far field: the same Stokes drag 6 pi eta_f a relative to the affine flow (flagVF 0); the
+  plugin tallies its virial (fix_modify virial yes; shown apart), the peer none, but adds the
+  isotropic stresslet 5/2 phi eta_f gdot (shown apart).
+- Dynamics: the plugin keeps the spheres' inertia (St 1e-3) and integrates contacts and films in
+  one backward-Euler step (contacts as forces of the step); the peer is inertia-free: each step
+  solves R U = F for the velocities twice (midpoint), the contact forces explicit, with its own
+  conjugate-gradient loop (relative tolerance 1e-3, no iteration limit).
+- Contacts: the same linear spring-dashpot with history and friction per type pair; the plugin
+  integrates it over the step (integration exact), granular evaluates it once per step.
+"""
+
+
 def report(phi_rows, n, strain, repeats, args):
     lines = ["# Dense suspension: the coupled film solve against lubricateU/poly (bench/suspension_peer.py)", "",
              f"{n} bidisperse spheres (a and {RATIO} a, equal volumes), St {ST:g}, mu_c {args.friction}, "
@@ -453,7 +482,7 @@ def report(phi_rows, n, strain, repeats, args):
              "isotropic (Einstein) stresslet, in units of eta_f gdot. 'springs': sigma_xy / (eta_f gdot) "
              "and P of the normal contact springs alone (k delta, from 20 snapshots of the averaging window): "
              "the rest of eta_s - 1 and of P is the films' (and the tangential contacts').", ""]
-    lines += table(phi_rows) + [""] + verdict(phi_rows) + [""]
+    lines += table(phi_rows) + [""] + verdict(phi_rows) + ["", DIFFERENCES]
     return "\n".join(lines)
 
 
