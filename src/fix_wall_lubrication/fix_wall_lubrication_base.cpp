@@ -20,6 +20,8 @@
 #include "update.h"
 #include "utils.h"
 
+#include <cmath>
+#include <cstring>
 #include <mpi.h>
 
 using namespace LAMMPS_NS;
@@ -36,6 +38,16 @@ void FixWallLubricationBase::post_constructor()
 int FixWallLubricationBase::setmask()
 {
   return (coeffs.wet() ? PRE_FORCE : 0) | POST_FORCE | MIN_POST_FORCE;
+}
+
+void FixWallLubricationBase::parse_cavitation(const char *style, const char *value, bool &seen)
+{
+  if (seen) error->all(FLERR, "{}: cavitation given twice", style);
+  seen = true;
+  const bool none = strcmp(value, "none") == 0;    // the film as it is (the default)
+  cavitation = none ? -1.0 : utils::numeric(FLERR, value, false, lmp);
+  if (!none && !(cavitation >= 0.0 && std::isfinite(cavitation)))
+    error->all(FLERR, "{}: cavitation dp_c = {} is out of range (allowed: none, or 0 <= dp_c, finite)", style, value);
 }
 
 void FixWallLubricationBase::init_model(const char *style, const std::string &what)

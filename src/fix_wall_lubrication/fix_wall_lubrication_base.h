@@ -104,8 +104,10 @@ class FixWallLubricationBase : public Fix, public FilmBudgetParticipant, public 
   void apply_contact(int i, double mass, const WallContact &contact);
   void apply_contact_of_mass(int i, double mass, const WallContact &contact);
   // The tension limit dp_c of a separating film (lubricated/film_cavitation.h; < 0: none, the
-  // film as printed); the plane and cylinder walls' keyword cavitation sets it.
+  // film as printed); the walls' keyword cavitation sets it (parse_cavitation: the value word,
+  // `seen` refusing a second one).
   double cavitation = -1.0;
+  void parse_cavitation(const char *style, const char *value, bool &seen);
   void relieve_cavitation(lubricated::ContactForces &forces, const WallContact &contact) const;
   // A force and torque on atom i in the fix's vector sums (the energy is sums[0]).
   virtual void tally(int i, const lubricated::Vec3 &force, const lubricated::Vec3 &torque) = 0;

@@ -3,6 +3,7 @@
 
    fix ID group wall/lubrication/region e_d regionID [keyword value ...]
      keywords as in pair_coeff of pair_style lubricated/springdashpot
+     and cavitation dp_c|none: the separating film's tension limit, as in fix wall/lubrication
 ------------------------------------------------------------------------- */
 
 #include "fix_wall_lubrication_region.h"
@@ -50,9 +51,18 @@ FixWallLubricationRegion::FixWallLubricationRegion(LAMMPS *lmp, int narg, char *
     error->all(FLERR, "{} requires atom_style sphere (per-atom radius and rmass)", STYLE);
   if (narg < 5) error->all(FLERR, "{}: expected e_d and a region ID (fix ID group {} e_d regionID ...)", STYLE, style);
 
-  // e_d, then the coefficient keywords after the region ID, exactly as in pair_coeff.
+  // e_d, then the coefficient keywords after the region ID, exactly as in pair_coeff; among
+  // them cavitation, as after the walls of fix wall/lubrication.
   std::vector<std::string> words{arg[3]};
-  words.insert(words.end(), arg + 5, arg + narg);
+  bool seen_cavitation = false;
+  for (int iarg = 5; iarg < narg; iarg++) {
+    if (strcmp(arg[iarg], "cavitation") != 0) {
+      words.emplace_back(arg[iarg]);
+      continue;
+    }
+    if (iarg + 1 >= narg) error->all(FLERR, "{}: cavitation needs 1 value", STYLE);
+    parse_cavitation(STYLE, arg[++iarg], seen_cavitation);
+  }
   const std::string problem = lub::parse_coefficients(words, 0, coeffs);
   if (!problem.empty()) error->all(FLERR, "{}: {}", STYLE, problem);
 

@@ -121,13 +121,7 @@ void FixWallLubrication::parse_motion(int narg, char **arg, int iarg)
       iarg += 2;
     } else if (key == "cavitation") {
       needs("cavitation", 1);
-      if (seen_cavitation) error->all(FLERR, "{}: cavitation given twice", STYLE);
-      seen_cavitation = true;
-      const bool none = strcmp(arg[iarg + 1], "none") == 0;    // the film as it is (the default)
-      cavitation = none ? -1.0 : utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (!none && !(cavitation >= 0.0 && std::isfinite(cavitation)))
-        error->all(FLERR, "{}: cavitation dp_c = {} is out of range (allowed: none, or 0 <= dp_c, finite)", STYLE,
-                   arg[iarg + 1]);
+      parse_cavitation(STYLE, arg[iarg + 1], seen_cavitation);
       iarg += 2;
     } else {
       error->all(FLERR,

@@ -108,6 +108,7 @@ void NormalModel<LUBRICATED>::connectToProperties(PropertyRegistry &)
                       "before the run (insert them first, or give lubricatedActivation)");
   neighbor->register_contact_dist_factor(1.0 + reach + lubricated::liggghts::approach_margin);
   warned_ = false;
+  overlap_warned_ = overlap_deep_warned_ = false, overlap_depth_ = lubricated::overlap_warning_fraction;
   if (!is_wall_) find_immovable_groups();
   step_velocity_ = lubricated::liggghts::FixLubricatedStepVelocity::find_or_create(lmp);
   // With a grid spacing the factor covers the radii from r_min up: a smaller sphere inserted
@@ -310,6 +311,31 @@ void NormalModel<LUBRICATED>::missed_approach(double u_n)
   warned_ = true;
   message_ = lubricated::liggghts::missed_approach_warning(u_n, dt_, neighbor->contactDistanceFactor);
   error->warning(FLERR, message_.c_str());
+}
+
+void NormalModel<LUBRICATED>::check_overlap(const SurfacesIntersectData &sidata, double gap, int t)
+{
+  const int i = sidata.i, j = sidata.j;
+  if (!is_wall_ && immovable(i) && immovable(j)) return;    // neither can move
+  const double radius = smaller_radius(sidata);
+  const double fraction = lubricated::overlap_fraction(gap, radius);
+  const lubricated::OverlapLevel level = lubricated::overlap_level(fraction);
+  const bool deep = level == lubricated::OverlapLevel::error;
+  if (level == lubricated::OverlapLevel::none || (deep ? overlap_deep_warned_ : overlap_warned_)) return;
+  overlap_warned_ = true;
+  overlap_deep_warned_ = deep;
+  overlap_depth_ = deep ? INFINITY : lubricated::overlap_error_fraction;
+  const std::string type_i = std::to_string(atom->type[i]), tag_i = std::to_string(atom->tag[i]);
+  const std::string who = is_wall_
+                              ? "model lubricated: atom " + tag_i + " (type " + type_i + ") and the wall of fix " +
+                                    static_cast<LAMMPS_NS::FixWallGran *>(hsetup_)->id + " (wall/gran)"
+                              : "pair gran model lubricated: atoms " + tag_i + " and " + std::to_string(atom->tag[j]) +
+                                    " (types " + type_i + " " + std::to_string(atom->type[j]) + ")";
+  // LIGGGHTS's properties: t_c = N_c dt at every time step, one value for all type pairs.
+  const lubricated::ContactTimeNames names{"lubricatedContactTime", "lubricatedContactSteps", true, false};
+  const std::string text =
+      lubricated::overlap_message(who, gap, radius, fraction, coefficients_[t], dt_, false, is_wall_, names);
+  error->warning(FLERR, text.c_str());
 }
 
 void NormalModel<LUBRICATED>::find_immovable_groups()

@@ -47,6 +47,7 @@ NORMAL_MODEL(LUBRICATED, lubricated, 42)
 #include "lubricated/contact_network.h"
 #include "lubricated/film_budget.h"
 #include "lubricated/normal_model.h"
+#include "lubricated/overlap_check.h"
 #include "lubricated/tangential.h"
 
 #include <algorithm>
@@ -123,6 +124,7 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
     const lubricated::FilmRadius radius = film_radius(sidata);
     if (!update->setupflag && gap - u_n * dt_ >= (neighbor->contactDistanceFactor - 1.0) * sidata.radsum)
       missed_approach(u_n);    // entered from beyond the close range: no step before was seen
+    if (gap < -overlap_depth_ * smaller_radius(sidata)) check_overlap(sidata, gap, t);
     lubricated::NormalForce fn;
     if (!(model.exact && stepping(continued) &&
           lubricated::liggghts::sustained_contact(model, gap, radius, m_e, u_n, fn,
@@ -391,6 +393,18 @@ template <> class NormalModel<LUBRICATED> : public NormalModelBase {
 
   // A contact whose previous step was not evaluated: its entry is integrated approximately.
   void missed_approach(double u_n);
+
+  // The overlap check (lubricated/overlap_check.h), as in the LAMMPS plugin: a contact of type
+  // pair t overlapping by more than overlap_depth_ of the smaller radius (a wall: the sphere's)
+  // warns, once per run beyond each of the two limits (overlap_depth_ then rises to the next;
+  // reset at each run's init). Pairs of two immovable atoms are not checked.
+  double smaller_radius(const SurfacesIntersectData &sidata) const
+  {
+    return is_wall_ ? sidata.radi : std::min(sidata.radi, sidata.radj);
+  }
+  __attribute__((noinline)) void check_overlap(const SurfacesIntersectData &sidata, double gap, int t);
+  double overlap_depth_ = lubricated::overlap_warning_fraction;
+  bool overlap_warned_ = false, overlap_deep_warned_ = false;
 
   bool is_wall_;
   LAMMPS_NS::PairGran *pair_;

@@ -1,8 +1,9 @@
 // The overlap check (doc/model.rst, "Overlap check"): a contact whose overlap exceeds a fraction
 // of the smaller radius (a wall: of the sphere's radius) is too soft for its load or impact
-// speed. Above overlap_error_fraction the run stops, above overlap_warning_fraction it warns
-// once per run; the message names the contact, its t_c and the t_c that keeps it below. The
-// same in every adapter (LAMMPS pair style and walls).
+// speed. Above overlap_warning_fraction and above overlap_error_fraction it warns once per run
+// each; a centre gone behind a wall after a contact stops the run. The message names the
+// contact, its t_c and the t_c that keeps it below. The same in every adapter (LAMMPS pair style
+// and walls, LIGGGHTS model lubricated).
 #pragma once
 
 #include "lubricated/coefficients.h"
@@ -48,12 +49,35 @@ inline double contact_time_below(double contact_time, double fraction, double li
   return contact_time * limit / fraction;
 }
 
+// How the message's advice names the settings of t_c: the LAMMPS plugin's keywords, where
+// ncontact settles t_c at the first run's time step (coefficients.h) and each type pair has its
+// own, or LIGGGHTS's properties, where t_c = N_c dt follows every time step (steps_follow_dt)
+// and one value holds for all type pairs.
+struct ContactTimeNames {
+  const char *time = "tcontact", *steps = "ncontact";
+  bool steps_follow_dt = false, per_type_pair = true;
+};
+
+namespace detail {
+// The advice's second way to reach t_below, where the contact time is given in steps.
+inline std::string steps_advice(const Coefficients &c, double t_below, const ContactTimeNames &names)
+{
+  if (c.t_contact > 0.0) return "";
+  const std::string step = number(t_below / c.n_contact);
+  if (names.steps_follow_dt)
+    return ", or a time step of " + step + " or less with " + names.steps + " " + number(c.n_contact);
+  return ", or " + std::string(names.steps) + " " + number(c.n_contact) + " from a first run at a time step of " +
+         step + " or less";
+}
+}    // namespace detail
+
 // The message for a contact (`who`: "atoms 12 and 5 (types 1 2)", "atom 17 (type 1) and the
 // wall of fix floor") overlapping by `fraction` of radius `radius` (gap < 0) under coefficients c
 // at step dt. through: the centre went behind the wall it touched (the certain failure); wall:
-// the radius is the sphere's.
+// the radius is the sphere's; names: how the advice names t_c's settings.
 inline std::string overlap_message(const std::string &who, double gap, double radius, double fraction,
-                                   const Coefficients &c, double dt, bool through, bool wall = false)
+                                   const Coefficients &c, double dt, bool through, bool wall = false,
+                                   const ContactTimeNames &names = {})
 {
   using detail::number;
   const OverlapLevel level = through ? OverlapLevel::error : overlap_level(fraction);
@@ -73,12 +97,10 @@ inline std::string overlap_message(const std::string &who, double gap, double ra
           number(t_c) + " (N_c = " + number(t_c / dt) + " steps of " + number(dt) + "); t_c <= " + number(t_below) +
           " brings this overlap to " + number(limit) +
           " of the radius (an overlap still growing under a load needs "
-          "less): tcontact " +
-          number(t_below) +
-          (c.t_contact > 0.0 ? ""
-                             : ", or ncontact " + number(c.n_contact) + " from a first run at a time step of " +
-                                   number(t_below / c.n_contact) + " or less") +
-          "; per-type-pair coefficients can give small spheres a shorter t_c (doc/model.rst, \"Overlap check\")";
+          "less): " +
+          names.time + " " + number(t_below) + detail::steps_advice(c, t_below, names) +
+          (names.per_type_pair ? "; per-type-pair coefficients can give small spheres a shorter t_c" : "") +
+          " (doc/model.rst, \"Overlap check\")";
   return text;
 }
 
