@@ -39,6 +39,7 @@ Writes section `film-solve-cost` of bench/RESULTS.md (`--results none`: printed 
 Scratch: build/bench-film-solve (`--out`), wiped at the start.
 """
 import argparse
+import datetime
 import os
 import platform
 import pathlib
@@ -272,7 +273,7 @@ def percent(value):
 
 def suspension_table(susp, args):
     repeats = f"{args.repeats} interleaved repeats" if args.repeats > 1 else "1 repeat"
-    lines = ["", "### Where the solve is taken: sheared dense suspensions", "",
+    lines = ["", "## Where the solve is taken: sheared dense suspensions", "",
              f"St 1e-3, friction 0.5, N_c 8, sheared {args.warmup} steps before, {args.steps} steps a run, "
              f"{repeats}; K = {args.k_low} and {args.k_high} for the slope (solved films of the K runs within "
              f"{max(r['films_off'] for r in susp):.1%} of the 1e-4 run's).", "",
@@ -304,13 +305,14 @@ def load_caveat(load):
 
 
 def report(susp, bed_rows, args, wall, load):
-    lines = [f"{platform.node()}, {platform.machine()}, 1 rank, LAMMPS {bench_common.lammps_version()}; "
+    lines = [f"# Coupled film solve, limit implicit (issue 45, {datetime.date.today().isoformat()})", "",
+             f"{platform.node()}, {platform.machine()}, 1 rank, LAMMPS {bench_common.lammps_version()}; "
              f"`bench/film_solve_cost.py {' '.join(sys.argv[1:])}`, {wall / 60:.1f} min. Method: the script's docstring.",
              "", load_caveat(load)]
     if susp:
         lines += suspension_table(susp, args)
     if bed_rows:
-        lines += ["", "### Where it is not taken: the bench bed", "",
+        lines += ["", "## Where it is not taken: the bench bed", "",
                   f"{args.bed_size} spheres (bench/independent_beds.py), {args.bed_steps} steps, callgrind Ir inside "
                   "Verlet::run per particle-step; the solve never ran (compute pair, every 10 steps). Limit: 2 %.", "",
                   "| state | style | limit atom | limit implicit | overhead | verdict |" +
