@@ -1,7 +1,8 @@
 """The coupled film solve (`pair_style lubricated/springdashpot limit implicit`, issue 45,
 doc/film_solve.rst): an isolated collision keeps its step-exact films (no load exceeds 1, the
 solve is never taken), dense wet beds at low St never gain energy with the films of the
-spheres over budget solved together, 1 and 2 ranks agree to the solver's tolerance, bad
+spheres over budget solved together, 1 and 2 ranks agree to the solver's tolerance (1, 2 and 4
+on a sheared suspension), bad
 keywords end in an ERROR naming them, and a restart keeps the mode.
 
 Scenes: tools/dense_scenes.py (256 spheres on an fcc lattice, every gap in the film, St =
@@ -15,6 +16,7 @@ import numpy as np
 import pytest
 
 import dense_scenes
+import suspension_scene
 
 ROUND_OFF = 1e-12
 
@@ -107,6 +109,43 @@ def test_one_and_two_ranks_agree(lmp):
         assert rows(lmp.log)[-1][4] > 0
         finals.append(final[0])
     assert finals[1] == pytest.approx(finals[0], rel=1e-9)
+
+
+# Without yielding, MPICH's ranks spin while they wait; with 4 ranks on 2 loaded cores each of the
+# solve's hundreds of exchanges per step then waits for time slices (5 steps: 26 s, 4 s with it).
+FOUR_RANKS = {**dense_scenes.OVERSUBSCRIBED, "MPIR_CVAR_ENABLE_HEAVY_YIELD": "1"}
+
+
+def test_one_two_and_four_ranks_agree_on_a_sheared_suspension(lmp):
+    """The dense sheared suspension of tests/lammps/suspension_scene.py (80 spheres at solid
+    fraction 0.54, friction 0.5, St 1e-3, the affine drag in the virial), 8 steps from rest at
+    tolerance tau = 1e-8 (about 130 iterations a step) on 1, 2 and 4 ranks (processor grids
+    1 1 1, 1 1 2, 1 2 2). Each step's velocities lie within tau of the kick of the exact solve,
+    so two rank counts differ by at most 2 tau per step, 2 N tau over N steps while the packing
+    does not amplify (8 steps, strain 5e-4): the averaged and final eta_s, P / (eta_f gdot) and
+    mu, the velocities and forces (relative to their largest) and the positions (in units of a)
+    within 2 N tau = 1.6e-7. (Measured over 20 steps at tau = 1e-8, 1e-10 and 1e-12: 1e-11 or
+    less; the ranks run the same iterations, so their difference is the round-off of the other
+    summation order, not tau.)"""
+    lmp(suspension_scene.packing_script(), name="in.packing", **suspension_scene.PACKING)
+    steps, tolerance = 8, 1e-8
+    script = suspension_scene.shear(str(lmp.dir / "packing.data"), steps=steps, tol=tolerance)
+    runs = {}
+    for nprocs in (1, 2, 4):
+        results = lmp(script, nprocs=nprocs, name="in.shear", env=FOUR_RANKS if nprocs > 2 else None)
+        assert dense_scenes.ranks(lmp.log) == {nprocs}
+        assert results["iterations"] > 1.0 and "WARNING" not in lmp.log
+        runs[nprocs] = results, suspension_scene.final_state(lmp.dir)
+    bound = 2 * steps * tolerance
+    (reference, state) = runs[1]
+    for nprocs in (2, 4):
+        results, other = runs[nprocs]
+        for key in ("mean", "final"):
+            assert results[key] == pytest.approx(reference[key], rel=bound), (nprocs, key)
+        assert (other[:, 0] == state[:, 0]).all()
+        assert abs(other[:, 1:4] - state[:, 1:4]).max() <= bound
+        for columns in (slice(4, 7), slice(7, 10)):
+            assert abs(other[:, columns] - state[:, columns]).max() <= bound * abs(state[:, columns]).max()
 
 
 def test_iteration_limit_warns_once(lmp):
