@@ -117,7 +117,7 @@ void FixFluidDrag::init()
   if (history) lay_out_tail(history_begun ? history_dt : update->dt);    // kept once the history has begun
   if (history && !stiff_warned) warn_stiff_history();
   step_velocity = dynamic_cast<FixStepVelocity *>(modify->get_fix_by_id(FixStepVelocity::ID));
-  if (solves_acceleration()) check_last_force_fix();
+  if (solves_acceleration() || rotation) check_last_force_fix();
 }
 
 // Beyond beta dt / (m + m_a + m_h) = 1 the drag is capped (post_force) but the history force
@@ -159,7 +159,7 @@ void FixFluidDrag::check_last_force_fix()
     }
     if (after && (modify->fmask[i] & POST_FORCE))
       error->all(FLERR,
-                 "{} with added_mass or history must be the last fix that adds forces: define fix {} "
+                 "{} with added_mass, history or rotation must be the last fix that adds forces: define fix {} "
                  "(style {}) before it",
                  STYLE, modify->fix[i]->id, modify->fix[i]->style);
   }

@@ -2,7 +2,8 @@
    fix fluid/drag: the unresolved fluid acting on finite-size spheres: drag from the slip
    velocity (Stokes or Schiller-Naumann), hindered settling from the local solid fraction
    (Richardson-Zaki or Di Felice) and buoyancy; optionally the fluid's inertia and memory
-   (added mass, undisturbed-flow force, Basset history, Magnus and Saffman lift). Physics in
+   (added mass, undisturbed-flow force, Basset history, Magnus and Saffman lift) and the
+   Stokes torque on the spin. Physics in
    src/lubricated/drag.h and src/lubricated/fluid_inertia.h. Keywords parsed in
    fix_fluid_drag_args.cpp, the force per atom in fix_fluid_drag_force.cpp, the per-atom
    history in fix_fluid_drag_history.cpp.
@@ -84,6 +85,7 @@ class FixFluidDrag : public Fix {
   bool history = false;                                       // Basset-Boussinesq
   bool magnus = false;                                        // Rubinow-Keller lift
   bool saffman = false;                                       // Saffman-Mei shear lift
+  bool rotation = false;                                      // Stokes torque on the spin
   int history_window = 10, history_modes = 20;
   lubricated::BassetHistory basset;
   bool finite_re = false;    // kernel mei-adrian (history_kernel.h) instead of Basset's
@@ -132,6 +134,8 @@ class FixFluidDrag : public Fix {
   double history_force(int i, const Slip &s, double *known);
   void near_wall_added_mass(int i, const Slip &s, double m_a, double *axis_mass, double *wall_force) const;
   void lift_force(int i, const Slip &s, const double *omega, double *lift) const;
+  void apply_rotation(int i, const double *omega);
+  void fluid_vorticity(int i, double *curl) const;
   void fluid_velocity(int i, double *u) const;
   void record(int i, const double *force);
   void setup_history();

@@ -7,6 +7,7 @@
      bins nx ny nz | every N
      added_mass C_m | wall xplane|yplane|zplane lo hi (NULL or a number) | pressure yes|no | acceleration ax ay az (numbers or v_name)
      history yes|no | kernel basset|mei-adrian | window N_w | tail M | magnus yes|no | vorticity wx wy wz | saffman yes|no
+     | rotation yes|no
 
    Each row of the table names a keyword, the number of values it needs at least and the
    action that reads them (and returns how many it read); a range check names the keyword,
@@ -211,6 +212,7 @@ struct FluidDragKeywords {
   static int pressure(Values &a) { return a.fix.pressure = a.yes_no(0), 1; }
   static int history(Values &a) { return a.fix.history = a.yes_no(0), 1; }
   static int magnus(Values &a) { return a.fix.magnus = a.yes_no(0), 1; }
+  static int rotation(Values &a) { return a.fix.rotation = a.yes_no(0), 1; }
   static int saffman(Values &a) { return a.fix.saffman = a.yes_no(0), 1; }
 };
 }    // namespace LAMMPS_NS
@@ -245,6 +247,7 @@ const Keyword KEYWORDS[] = {
     {"magnus", 1, K::magnus},
     {"vorticity", 3, K::vorticity},
     {"saffman", 1, K::saffman},
+    {"rotation", 1, K::rotation},
 };
 
 // "viscosity, density, ... or saffman", for the unknown-keyword message.

@@ -28,7 +28,7 @@ void FixFluidDrag::post_force(int vflag)
   // Fluid velocity and acceleration: constants, equal-style or atom-style variables.
   evaluate(velocity, atom_velocity);
   if (fluid_inertia()) evaluate(acceleration, atom_acceleration);
-  if (magnus || saffman) evaluate(vorticity, atom_vorticity);
+  if (magnus || saffman || rotation) evaluate(vorticity, atom_vorticity);
   if (history) weigh_history_steps();
 
   // A set-up that continues the last run drags with the velocities of its last step, as that
@@ -47,6 +47,7 @@ void FixFluidDrag::post_force(int vflag)
       apply_with_inertia(i, slip, omega[i]);
     else
       apply_drag(i, slip);
+    if (rotation) apply_rotation(i, omega[i]);
   }
 }
 
@@ -164,6 +165,34 @@ void FixFluidDrag::near_wall_added_mass(int i, const Slip &s, double m_a, double
   lub::wall_added_mass_force(near, m_a, relative, wall_force);
   for (int d = 0; d < 3; d++)
     axis_mass[d] = m_a * near.mass[d];
+}
+
+// The Stokes torque on the spin relative to the fluid's rotation (drag.h), backward Euler with
+// the torques of the step so far (this fix is the last to add forces, init()).
+void FixFluidDrag::apply_rotation(int i, const double *omega)
+{
+  const double radius = atom->radius[i];
+  const double inertia = 0.4 * atom->rmass[i] * radius * radius;
+  double curl[3], spin_slip[3], torque[3];
+  fluid_vorticity(i, curl);
+  for (int d = 0; d < 3; d++)
+    spin_slip[d] = 0.5 * curl[d] - omega[d];
+  lub::implicit_drag_torque(lub::rotational_drag_coefficient(radius, model.viscosity), inertia, update->dt, spin_slip,
+                            atom->torque[i], torque);
+  for (int d = 0; d < 3; d++)
+    atom->torque[i][d] += torque[d];
+}
+
+// The fluid's vorticity curl u_f at atom i: the vorticity keyword, else that of the deforming
+// box's affine flow (flow affine), else none.
+void FixFluidDrag::fluid_vorticity(int i, double *curl) const
+{
+  if (affine_flow && !vorticity_given) {
+    lub::affine_vorticity(domain->h_rate, domain->h_inv, curl);
+    return;
+  }
+  for (int d = 0; d < 3; d++)
+    curl[d] = vorticity[d].per_atom ? atom_vorticity[d][i] : vorticity[d].value;
 }
 
 // Magnus lift (spin relative to the fluid's, omega - curl u / 2) and Saffman's shear lift.

@@ -76,6 +76,40 @@ inline void affine_velocity(const double *h_rate, const double *lo_rate, const d
   u[2] = h_rate[2] * lamda[2] + lo_rate[2];
 }
 
+// The curl of that affine velocity, curl u = eps_ijk d_j u_k with grad u = hdot h^-1 (both
+// upper triangular, Voigt order; h_inv is h^-1 in the same order). Simple shear xy erate
+// gdot: curl u = (0, 0, -gdot).
+inline void affine_vorticity(const double *h_rate, const double *h_inv, double *curl)
+{
+  const double l01 = h_rate[0] * h_inv[5] + h_rate[5] * h_inv[1];                           // du_x/dy
+  const double l02 = h_rate[0] * h_inv[4] + h_rate[5] * h_inv[3] + h_rate[4] * h_inv[2];    // du_x/dz
+  const double l12 = h_rate[1] * h_inv[3] + h_rate[3] * h_inv[2];                           // du_y/dz
+  curl[0] = -l12;
+  curl[1] = l02;
+  curl[2] = -l01;
+}
+
+// The fluid's resistance to a sphere's spin relative to its own rotation curl u_f / 2:
+// T = 8 pi mu_f a^3 (curl u_f / 2 - omega) in creeping flow (Happel & Brenner 1965; Kim &
+// Karrila 1991), for a spin Reynolds number |curl u_f / 2 - omega| a^2 / nu_f well below 1.
+inline double rotational_drag_coefficient(double radius, double viscosity)
+{
+  return 8.0 * pi * viscosity * radius * radius * radius;
+}
+
+// The torque of that resistance over a step dt on a sphere of moment of inertia I, backward
+// Euler in the spin with the step's other torques T_o held: the spin ends at
+// (omega + k Omega_f + dt T_o / I) / (1 + k), k = beta_r dt / I, so the torque is
+// (beta_r s - k T_o) / (1 + k) with s = Omega_f - omega. Stable for any k, exact in steady
+// state (omega = Omega_f + T_o / beta_r), and beta_r s where k is small.
+inline void implicit_drag_torque(double beta_r, double inertia, double dt, const double *spin_slip, const double *other,
+                                 double *torque)
+{
+  const double k = beta_r * dt / inertia;
+  for (int d = 0; d < 3; d++)
+    torque[d] = (beta_r * spin_slip[d] - k * other[d]) / (1.0 + k);
+}
+
 inline double sphere_volume(double radius)
 {
   return 4.0 / 3.0 * pi * radius * radius * radius;
