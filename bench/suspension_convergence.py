@@ -6,7 +6,8 @@ its convergence in the time step, for the film budget (limit atom) and the coupl
         [--jobs 4] [--reuse] [--no-reference]
 
 The system: examples/suspension_shear/in.suspension_shear with 64 bidisperse spheres (radii a
-and 1.4 a, equal volumes), St = 1e-3, gdot t_c = 1e-3, activation 0.1 and saturation 1e-2 (a
+and 1.4 a, equal volumes), St = 1e-3, gdot t_c = 1e-3, activation 0.1, no torque on the spins
+(rotation no: the reference was made before the example turned it on) and saturation 1e-2 (a
 film ten times weaker near contact than the default 1e-3, so that a step that resolves every
 film is affordable: with 1e-3 the budget binds until N_c is about ten times larger still).
 Solid fractions 0.50, 0.54, 0.56, friction 0 and 0.5, two packings (seeds) each. Every run of
@@ -49,7 +50,7 @@ CONVERGENCE_CSV = ROOT / "bench" / "data" / "suspension_convergence.csv"
 CASES = [(0.50, 0.5), (0.54, 0.5), (0.56, 0.5), (0.50, 0.0), (0.54, 0.0), (0.56, 0.0)]
 SEEDS = [4928, 7331]
 COMMON = {"n": 64, "St": 1e-3, "gtc": 1e-3, "saturation": 1e-2, "strain": 1.0, "average": 0.7,
-          "thermo": 400000}
+          "thermo": 400000, "rotation": "no"}
 BLOCK = 0.1                  # strain per block of the averages
 REFERENCE_NC = 4096
 SAMPLES_PER_STRAIN = 8000    # the series' samples (every max(1, steps per strain / this) steps)
@@ -131,8 +132,8 @@ def write_csv(path, rows, header):
     path.parent.mkdir(parents=True, exist_ok=True)
     with open(path, "w", newline="") as f:
         f.write("".join(f"# {line}\n" for line in header.strip().splitlines()))
-        writer = csv.DictWriter(f, fieldnames=COLUMNS + (["eta_s_dev", "P_dev", "mu_dev"]
-                                                         if "eta_s_dev" in rows[0] else []))
+        extra = ["eta_s_dev", "P_dev", "mu_dev"] if "eta_s_dev" in rows[0] else []
+        writer = csv.DictWriter(f, fieldnames=COLUMNS + extra, lineterminator="\n")
         writer.writeheader()
         for row in rows:
             writer.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in row.items()})
@@ -140,7 +141,7 @@ def write_csv(path, rows, header):
 
 REFERENCE_HEADER = f"""The reference of the sheared suspension (bench/suspension_convergence.py): every film resolved.
 examples/suspension_shear/in.suspension_shear, n 64, St 1e-3, gdot t_c 1e-3, activation 0.1,
-saturation 1e-2, N_c {REFERENCE_NC} (dt = t_c / {REFERENCE_NC}) with limit implicit, which is limit atom
+rotation no, saturation 1e-2, N_c {REFERENCE_NC} (dt = t_c / {REFERENCE_NC}) with limit implicit, which is limit atom
 bit for bit where no sphere's budget load exceeds 1 (solved_fraction: the fraction of samples
 with any film solved). Seeds {' '.join(map(str, SEEDS))} (one packing each, made at N_c 16), strain 1,
 the stress averaged over the last 0.7 in blocks of 0.1 of strain, pooled over the seeds; *_err

@@ -11,7 +11,8 @@ sheared from rest by both engines:
 
   plugin  pair_style lubricated/springdashpot limit implicit (films within activation 0.1,
           saturation 1e-3, shear film, friction), fix nve/sphere, fix fluid/drag stokes flow
-          affine, at N_c 8 and 16 (and 32 unless --quick);
+          affine rotation yes (the Stokes torque on the spins, as the peer's), at N_c 8 and 16
+          (and 32 unless --quick);
   peer    pair_style hybrid/overlay granular lubricateU/poly: the same linear spring-dashpot
           contacts with history and friction (granular hooke, damping mass_velocity, per type
           pair k so that every pair has the plugin's t_c and e_d), and lubricateU/poly (mu =
@@ -115,7 +116,7 @@ print "RESULT atoms $(atoms)"
 PLUGIN_ENGINE = """pair_style lubricated/springdashpot limit implicit tolerance {tol}
 pair_coeff * * {e_d} tcontact {tc} viscosity {eta} activation {act} saturation {sat} friction {mu_c} shearfilm yes
 fix nve all nve/sphere
-fix drag all fluid/drag viscosity {eta} density {rho} law stokes flow affine
+fix drag all fluid/drag viscosity {eta} density {rho} law stokes flow affine rotation yes
 fix_modify drag virial yes"""
 PLUGIN_COMPUTES = """compute pairs all pressure NULL pair
 compute drag all pressure NULL fix
@@ -453,9 +454,8 @@ DIFFERENCES = """What differs between the two models, with the parameters chosen
   about 0.04 and 0.1 the peer's film is the stronger one, below it the plugin's (up to 2 x).
 - Shear film: the plugin 2 pi eta_f R_e ln(eps_al / max(eps, eps_1)) on the surface slip (R_e
   = a/2 for equal spheres, the peer's pi eta_f a ln(1/h) shifted by ln eps_al); the peer also has
-  the pump term (relative spin) and rotational drag 8 pi eta_f a^3 against the fluid's vorticity;
-  the plugin's spheres spin freely apart from their films and contacts (fix fluid/drag applies
-  no torque).
+  the pump term (relative spin); both apply the rotational drag 8 pi eta_f a^3 against the
+  fluid's vorticity (the plugin's fix fluid/drag rotation yes).
 - Near contact: both hold the film at the saturation gap eps_1 = 1e-3 R (the peer's cutinner);
   the plugin removes it beyond an overlap of 1e-2 R (release), the peer keeps it at any overlap.
 - Far field: the same Stokes drag 6 pi eta_f a relative to the affine flow (flagVF 0); the

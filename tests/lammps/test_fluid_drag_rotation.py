@@ -98,3 +98,15 @@ def test_bad_rotation_input(lmp, edit, fragment):
     error = next((line for line in lmp.log.splitlines() if "ERROR" in line), None)
     assert error is not None, lmp.log[-1500:]
     assert fragment in error, error
+
+
+def test_one_and_two_ranks_agree(lmp):
+    deform = f"fix shear all deform 1 xy erate {GDOT!r} remap v"
+    text = scene(30, 0.5 * TAU_R, w0=3.0, fluid="flow affine rotation yes", deform=deform)
+    two = text.replace("create_box", "processors 2 1 1\ncreate_box").replace(
+        "create_atoms 1 single 0.005 0.004 0.005", "create_atoms 1 single 0.0075 0.004 0.005")
+    one = text.replace("create_atoms 1 single 0.005 0.004 0.005", "create_atoms 1 single 0.0075 0.004 0.005")
+    serial = lmp(one)["w"]
+    parallel = lmp(two, nprocs=2)["w"]
+    assert "2 by 1 by 1 MPI processor grid" in lmp.log
+    assert parallel == pytest.approx(serial, rel=1e-14, abs=1e-300)
