@@ -10,6 +10,9 @@
 #include "comm.h"
 #include "error.h"
 #include "force.h"
+#include "fix.h"
+#include "modify.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -104,6 +107,32 @@ void FilmSolveStep::gather_other_forces(const Records &records)
   if (newton_pair) exchange.reverse(other_force.data(), lub::film_dofs);
 }
 
+void FilmSolveStep::start_run()
+{
+  warned = false;
+  drag_fix = nullptr;
+  for (int k = 0; k < modify->nfix && !drag_fix; k++)
+    drag_fix = dynamic_cast<ImplicitDragParticipant *>(modify->fix[k]);
+}
+
+// The drag of drag_fix on the owned atoms into F (at w) and into the matrix (implicit_drag.h).
+bool FilmSolveStep::add_implicit_drag()
+{
+  if (!drag_fix || !drag_fix->drag_is_implicit()) return false;
+  const int nlocal = atom->nlocal;
+  drag.assign(nlocal, 0.0), rotational_drag.assign(nlocal, 0.0);
+  for (int k = 0; k < nlocal; k++) {
+    double *w = &velocity[lub::film_dofs * k], *f = &other_force[lub::film_dofs * k];
+    double u[3], spin[3];
+    drag_fix->linear_drag(k, w, drag[k], u, rotational_drag[k], spin);
+    for (int d = 0; d < 3; d++) {
+      f[d] += drag[k] * (u[d] - w[d]);
+      f[3 + d] += rotational_drag[k] * (spin[d] - w[3 + d]);
+    }
+  }
+  return true;
+}
+
 void FilmSolveStep::solve(const Records &records, const double *scale, const FilmBudget::TypeTables &tables,
                           const FilmBudget::StepInputs &step, FilmBudget::Tally *tally)
 {
@@ -115,6 +144,8 @@ void FilmSolveStep::solve(const Records &records, const double *scale, const Fil
   atoms.owned = nlocal, atoms.total = nall;
   atoms.inverse_mass = inverse_mass.data(), atoms.inverse_inertia = inverse_inertia.data();
   atoms.radius = atom->radius;
+  const bool implicit_drag = add_implicit_drag();
+  if (implicit_drag) atoms.drag = drag.data(), atoms.rotational_drag = rotational_drag.data();
   lub::FilmComm film_comm;
   film_comm.forward = [this](double *data, int width) { exchange.forward(data, width); };
   film_comm.reverse = [this](double *data, int width) { exchange.reverse(data, width); };
@@ -133,6 +164,7 @@ void FilmSolveStep::solve(const Records &records, const double *scale, const Fil
                      "raise iterations or tolerance, or shorten the time step (warned once per run)",
                      options.tolerance, options.max_iterations, result.residual, result.iterations);
   }
+  if (implicit_drag) drag_fix->take_increments(increment.data(), nlocal, update->ntimestep);
   // w' = w + x on owned and ghost atoms (the solver forwarded x).
   for (int e = 0; e < lub::film_dofs * nall; e++)
     velocity[e] += increment[e];

@@ -12,6 +12,7 @@
 #include "pointers.h"
 
 #include "film_budget/film_budget.h"
+#include "film_budget/implicit_drag.h"
 #include "lubricated/film_solve.h"
 
 #include <vector>
@@ -23,8 +24,9 @@ class FilmSolveStep : protected Pointers {
   FilmSolveStep(LAMMPS *lmp, AtomVectorComm &exchange) : Pointers(lmp), exchange(exchange) {}
 
   void configure(const FilmSolveSettings &settings);
-  // At each run's init: the non-convergence warning may be given again.
-  void start_run() { warned = false; }
+  // At each run's init: the non-convergence warning may be given again; the fix whose drag the
+  // solve takes implicitly (implicit_drag.h), if any.
+  void start_run();
   // Before each evaluation's finish: no solve yet.
   void clear_counts() { iterations = 0, solved = 0; }
   int last_iterations() const { return iterations; }
@@ -53,6 +55,9 @@ class FilmSolveStep : protected Pointers {
   std::vector<lubricated::FilmLink> links;    // solved here first, then (newton off) the others' copies
   std::vector<int> link_record;               // each link's record
   std::vector<double> inverse_mass, inverse_inertia, velocity, other_force, increment;
+  ImplicitDragParticipant *drag_fix = nullptr;
+  std::vector<double> drag, rotational_drag;    // per owned atom, where drag_fix acts this step
+  bool add_implicit_drag();
   int collect_links(const Records &records, const double *scale, const FilmBudget::TypeTables &tables);
   void gather_atoms(const FilmBudget::StepInputs &step);
   void gather_other_forces(const Records &records);

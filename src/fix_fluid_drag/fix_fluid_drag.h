@@ -14,6 +14,8 @@
 
 #include "fix.h"
 
+#include "film_budget/implicit_drag.h"
+
 #include "lubricated/drag.h"
 #include "lubricated/fluid_inertia.h"
 #include "lubricated/wall_added_mass.h"
@@ -24,7 +26,7 @@
 
 namespace LAMMPS_NS {
 
-class FixFluidDrag : public Fix {
+class FixFluidDrag : public Fix, public ImplicitDragParticipant {
  public:
   FixFluidDrag(class LAMMPS *, int, char **);
   ~FixFluidDrag() override;
@@ -42,6 +44,13 @@ class FixFluidDrag : public Fix {
   double added_mass_coefficient() const { return added_mass; }
   double fluid_density() const { return model.density; }
   const std::vector<lubricated::AddedMassWall> &near_walls() const { return added_mass_walls; }    // keyword wall
+
+  // The drag and torque taken implicitly by the pair style's coupled film solve
+  // (film_budget/implicit_drag.h; fix_fluid_drag_force.cpp).
+  bool drag_is_implicit() const override;
+  void linear_drag(int i, const double *v, double &drag, double *fluid_velocity, double &rotational_drag,
+                   double *fluid_spin) override;
+  void take_increments(const double *increments, int nlocal, bigint step) override;
 
   // the Basset history per atom (fix_fluid_drag_history.cpp)
   void grow_arrays(int) override;
@@ -108,6 +117,9 @@ class FixFluidDrag : public Fix {
   int maxatom = 0;
   bigint last_fraction_step = -1;
   double totals[4] = {0.0, 0.0, 0.0, 0.0}, totals_all[4] = {0.0, 0.0, 0.0, 0.0};
+  // The solve's increments of the owned atoms (6 each) at step solved_step, where it took the drag.
+  std::vector<double> solved_increments;
+  bigint solved_step = -1;
   bool totals_reduced = false;
 
   void parse(int narg, char **arg);
@@ -129,12 +141,12 @@ class FixFluidDrag : public Fix {
     double diameter, beta, buoyant_volume;    // d, the drag coefficient, rho_f V
   };
   Slip slip_at(int i, const double *v) const;
-  void apply_drag(int i, const Slip &s);
+  void apply_drag(int i, const Slip &s, const double *solved);
   void apply_with_inertia(int i, const Slip &s, const double *omega);
   double history_force(int i, const Slip &s, double *known);
   void near_wall_added_mass(int i, const Slip &s, double m_a, double *axis_mass, double *wall_force) const;
   void lift_force(int i, const Slip &s, const double *omega, double *lift) const;
-  void apply_rotation(int i, const double *omega);
+  void apply_rotation(int i, const double *omega, const double *solved);
   void fluid_vorticity(int i, double *curl) const;
   void fluid_velocity(int i, double *u) const;
   void record(int i, const double *force);

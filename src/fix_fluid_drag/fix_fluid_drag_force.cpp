@@ -40,15 +40,54 @@ void FixFluidDrag::post_force(int vflag)
     t = 0.0;
   totals_reduced = false;
 
+  // Where the pair style's film solve took the drag this step, its increments x (implicit_drag.h).
+  const double *solved = !update->setupflag && solved_step == update->ntimestep ? solved_increments.data() : nullptr;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     const Slip slip = slip_at(i, v[i]);
+    const double *x = solved ? solved + 6 * i : nullptr;
     if (fluid_inertia())
       apply_with_inertia(i, slip, omega[i]);
     else
-      apply_drag(i, slip);
-    if (rotation) apply_rotation(i, omega[i]);
+      apply_drag(i, slip, x);
+    if (rotation) apply_rotation(i, omega[i], x ? x + 3 : nullptr);
   }
+}
+
+// The coupled film solve may take the drag where it is linear in v and known before the pair
+// style evaluates: no fluid inertia, no solid fraction (bins), no fluid velocity or vorticity
+// from variables (evaluated after the pair style), and not at a set-up.
+bool FixFluidDrag::drag_is_implicit() const
+{
+  if (update->setupflag || fluid_inertia() || needs_fraction()) return false;
+  for (int d = 0; d < 3; d++)
+    if (!velocity[d].name.empty() || (rotation && !vorticity[d].name.empty())) return false;
+  return true;
+}
+
+void FixFluidDrag::linear_drag(int i, const double *v, double &drag, double *fluid_velocity, double &rotational_drag,
+                               double *fluid_spin)
+{
+  drag = rotational_drag = 0.0;
+  for (int d = 0; d < 3; d++)
+    fluid_velocity[d] = fluid_spin[d] = 0.0;
+  if (!(atom->mask[i] & groupbit)) return;
+  const Slip s = slip_at(i, v);
+  drag = s.beta;
+  for (int d = 0; d < 3; d++)
+    fluid_velocity[d] = s.w[d] + v[d];
+  if (!rotation) return;
+  rotational_drag = lub::rotational_drag_coefficient(atom->radius[i], model.viscosity);
+  double curl[3];
+  fluid_vorticity(i, curl);
+  for (int d = 0; d < 3; d++)
+    fluid_spin[d] = 0.5 * curl[d];
+}
+
+void FixFluidDrag::take_increments(const double *increments, int nlocal, bigint step)
+{
+  solved_increments.assign(increments, increments + 6 * nlocal);
+  solved_step = step;
 }
 
 // The fluid velocity at atom i (scaled to the interstitial one where it is superficial), the
@@ -85,13 +124,14 @@ void FixFluidDrag::fluid_velocity(int i, double *u) const
 }
 
 // Drag and buoyancy alone. Explicit relaxation is stable and exact in steady state while
-// beta dt / m <= 1; beyond, the drag removes the slip in one step and never reverses it.
-void FixFluidDrag::apply_drag(int i, const Slip &s)
+// beta dt / m <= 1; beyond, the drag removes the slip in one step and never reverses it. Where
+// the film solve took the drag (solved: its increment x of atom i), the drag at w + x.
+void FixFluidDrag::apply_drag(int i, const Slip &s, const double *solved)
 {
-  const double beta = std::min(s.beta, atom->rmass[i] / update->dt);
+  const double beta = solved ? s.beta : std::min(s.beta, atom->rmass[i] / update->dt);
   double force[3];
   for (int d = 0; d < 3; d++) {
-    force[d] = beta * s.w[d] - s.buoyant_volume * gravity[d];
+    force[d] = beta * (s.w[d] - (solved ? solved[d] : 0.0)) - s.buoyant_volume * gravity[d];
     atom->f[i][d] += force[d];
   }
   record(i, force);
@@ -168,15 +208,22 @@ void FixFluidDrag::near_wall_added_mass(int i, const Slip &s, double m_a, double
 }
 
 // The Stokes torque on the spin relative to the fluid's rotation (drag.h), backward Euler with
-// the torques of the step so far (this fix is the last to add forces, init()).
-void FixFluidDrag::apply_rotation(int i, const double *omega)
+// the torques of the step so far (this fix is the last to add forces, init()); where the film
+// solve took it (solved: the spin's increment), the torque at omega + x.
+void FixFluidDrag::apply_rotation(int i, const double *omega, const double *solved)
 {
   const double radius = atom->radius[i];
   const double inertia = 0.4 * atom->rmass[i] * radius * radius;
   double curl[3], spin_slip[3], torque[3];
   fluid_vorticity(i, curl);
   for (int d = 0; d < 3; d++)
-    spin_slip[d] = 0.5 * curl[d] - omega[d];
+    spin_slip[d] = 0.5 * curl[d] - omega[d] - (solved ? solved[d] : 0.0);
+  if (solved) {
+    const double beta_r = lub::rotational_drag_coefficient(radius, model.viscosity);
+    for (int d = 0; d < 3; d++)
+      atom->torque[i][d] += beta_r * spin_slip[d];
+    return;
+  }
   lub::implicit_drag_torque(lub::rotational_drag_coefficient(radius, model.viscosity), inertia, update->dt, spin_slip,
                             atom->torque[i], torque);
   for (int d = 0; d < 3; d++)

@@ -1,14 +1,16 @@
 """examples/suspension_shear (make suspension), tiny: 60 bidisperse spheres at solid fraction
-0.5 sheared to a strain of 0.3 at St 1e-3. The films solved together (limit implicit) keep every
-sphere and give a finite positive shear stress and particle pressure; the films add to the
-viscosity, and solved they resist more than scaled down by the budget (limit atom)."""
+0.5 sheared to a strain of 0.6 at St 1e-3, averaged over its last 0.3 (in the start-up, below a
+strain of about 0.3, the particle pressure of so small a box may still be negative). The films
+solved together (limit implicit) keep every sphere and give a finite positive shear stress and
+particle pressure; the films add to the viscosity, and solved they resist more than scaled down
+by the budget (limit atom)."""
 import math
 import pathlib
 
 import pytest
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-TINY = {"n": 60, "phi": 0.5, "strain": 0.3, "average": 0.2}
+TINY = {"n": 60, "phi": 0.5, "strain": 0.6, "average": 0.3}
 
 
 @pytest.fixture(scope="module")

@@ -1,0 +1,36 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   A fix whose force on each atom is a linear damper toward the fluid, c (u_f - v) and
+   c_r (Omega_f - omega) (fix fluid/drag's drag and torque), taken implicitly by the coupled film
+   solve (doc/film_solve.rst, "Drag in the solve"): before the solve the fix gives c, c_r, u_f
+   and Omega_f of the owned atoms at the velocities w of the evaluation; the solve puts c (u_f - w)
+   into F and c into its matrix and hands back the increments x of the step; the fix then applies
+   c (u_f - w - x) in place of its explicit c (u_f - w), so that the films, the contacts and the
+   drag balance within the step.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_LUBRICATED_IMPLICIT_DRAG_H
+#define LMP_LUBRICATED_IMPLICIT_DRAG_H
+
+#include "lmptype.h"
+
+namespace LAMMPS_NS {
+
+class ImplicitDragParticipant {
+ public:
+  // Whether this step's drag can be solved with the films (linear in v, known before the pair
+  // style evaluates).
+  virtual bool drag_is_implicit() const = 0;
+  // Owned atom i at velocity v and spin omega: drag coefficient c, the fluid velocity u_f,
+  // rotational coefficient c_r and fluid rotation Omega_f (all 0 for an atom the fix does not act on).
+  virtual void linear_drag(int i, const double *v, double &drag, double *fluid_velocity, double &rotational_drag,
+                           double *fluid_spin) = 0;
+  // The solve's increments of this step: 6 per atom (velocity, spin), the owned atoms first.
+  virtual void take_increments(const double *increments, int nlocal, bigint step) = 0;
+
+ protected:
+  ~ImplicitDragParticipant() = default;    // not deleted through this interface
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
