@@ -43,7 +43,15 @@ struct FluidDragValues {
   }
   double number(int k) const { return utils::numeric(FLERR, text(k), false, lmp); }
   int integer(int k) const { return utils::inumeric(FLERR, text(k), false, lmp); }
-  bool yes_no(int k) const { return utils::logical(FLERR, text(k), false, lmp) == 1; }
+  // LAMMPS's logical words (yes/no, on/off, true/false, 1/0); anything else names the keyword.
+  bool yes_no(int k) const
+  {
+    const std::string word = utils::lowercase(text(k));
+    if (word == "yes" || word == "on" || word == "true" || word == "1") return true;
+    if (word == "no" || word == "off" || word == "false" || word == "0") return false;
+    lmp->error->all(FLERR, "{}: {} must be yes or no, got '{}'", STYLE, keyword(), text(k));
+    return false;
+  }
   // lo <= value <= hi (or value = 0 where zero is allowed), else an ERROR "name = text is out of range".
   void check(bool valid, const char *name, int k, const char *allowed) const
   {

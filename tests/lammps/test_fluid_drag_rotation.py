@@ -89,7 +89,7 @@ def test_the_vorticity_keyword_sets_the_fluid_rotation(lmp):
 
 
 @pytest.mark.parametrize("edit,fragment", [
-    ({"fluid": "rotation maybe"}, "maybe"),
+    ({"fluid": "rotation maybe"}, "rotation must be yes or no, got 'maybe'"),
     ({"after": "fix push all addforce 0 0 0"},
      "with added_mass, history or rotation must be the last fix that adds forces: define fix push"),
 ])

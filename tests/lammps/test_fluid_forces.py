@@ -355,7 +355,7 @@ def test_saffman_lift_and_the_fluids_rotation(lmp):
 
 @pytest.mark.parametrize("extra,fragment", [
     ("added_mass -0.5", "added_mass C_m = -0.5 is out of range (allowed: 0 <= C_m <= 10"),
-    ("history maybe", "Expected boolean parameter instead of 'maybe'"),
+    ("history maybe", "history must be yes or no, got 'maybe'"),
     ("history yes window 0", "window N_w = 0 is out of range (allowed: 1 <= N_w <= 1000)"),
     ("history yes tail 65", "tail M = 65 is out of range (allowed: 0 or 8 <= M <= 64)"),
     ("history yes tail 4", "tail M = 4 is out of range"),
