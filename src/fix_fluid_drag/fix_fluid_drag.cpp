@@ -95,6 +95,7 @@ bool FixFluidDrag::needs_fraction() const
 
 void FixFluidDrag::init()
 {
+  solved_step = -1;    // a film solve's increments belong to the step that took them
   for (Component *set : {velocity, acceleration, vorticity})
     for (int d = 0; d < 3; d++) {
       Component &c = set[d];

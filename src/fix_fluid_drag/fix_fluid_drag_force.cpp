@@ -40,8 +40,9 @@ void FixFluidDrag::post_force(int vflag)
     t = 0.0;
   totals_reduced = false;
 
-  // Where the pair style's film solve took the drag this step, its increments x (implicit_drag.h).
-  const double *solved = !update->setupflag && solved_step == update->ntimestep ? solved_increments.data() : nullptr;
+  // Where the pair style's film solve took the drag this evaluation, its increments x
+  // (implicit_drag.h; init() forgets those of the last run).
+  const double *solved = solved_step == update->ntimestep ? solved_increments.data() : nullptr;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     const Slip slip = slip_at(i, v[i]);
@@ -56,10 +57,12 @@ void FixFluidDrag::post_force(int vflag)
 
 // The coupled film solve may take the drag where it is linear in v and known before the pair
 // style evaluates: no fluid inertia, no solid fraction (bins), no fluid velocity or vorticity
-// from variables (evaluated after the pair style), and not at a set-up.
+// from variables (evaluated after the pair style), and not at a set-up unless it continues the
+// last run's steps (fix_step_velocity.h: it then evaluates as the last step did).
 bool FixFluidDrag::drag_is_implicit() const
 {
-  if (update->setupflag || fluid_inertia() || needs_fraction()) return false;
+  const bool continued = step_velocity && step_velocity->continues();
+  if ((update->setupflag && !continued) || fluid_inertia() || needs_fraction()) return false;
   for (int d = 0; d < 3; d++)
     if (!velocity[d].name.empty() || (rotation && !vorticity[d].name.empty())) return false;
   return true;
