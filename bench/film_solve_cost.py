@@ -57,8 +57,8 @@ sys.path.insert(0, str(ROOT / "bench"))
 import bench_common  # noqa: E402
 import independent_beds as beds  # noqa: E402
 import lammps_run  # noqa: E402
+from suspension_packing import packing_script  # noqa: E402
 
-EXAMPLE = ROOT / "examples" / "suspension_shear" / "in.suspension_shear"
 CASES = ["250:0.50", "250:0.58", "1000:0.54", "2000:0.54"]
 FILMS_AGREE = 0.01    # K runs' solved films per step against the tolerance 1e-4 run's
 
@@ -98,12 +98,6 @@ thermo_style custom step c_solve[3] c_solve[4]
 thermo {steps}"""
 SAMPLED = """thermo_style custom step c_solve[3] c_solve[4]
 thermo 10"""
-
-
-def packing_script():
-    """The example's input up to its shear stage, then write_data."""
-    text = EXAMPLE.read_text()
-    return text[:text.index("# 2. Simple shear")] + "write_data packing.data nocoeff\n"
 
 
 CPU_USE = re.compile(r"^([0-9.]+)% CPU use with", re.M)

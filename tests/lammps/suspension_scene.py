@@ -20,16 +20,9 @@ import pathlib
 
 import numpy as np
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
-EXAMPLE = ROOT / "examples" / "suspension_shear" / "in.suspension_shear"
+from suspension_packing import packing_script  # noqa: F401 (tools/: the example's packing)
+
 PACKING = {"n": 80, "phi": 0.54, "St": 1e-3, "gtc": 1e-3, "nc": 16}
-
-
-def packing_script():
-    """The example's input up to its shear stage, ending with write_data packing.data."""
-    text = EXAMPLE.read_text()
-    head = text[:text.index("# 2. Simple shear")]
-    return head + "write_data packing.data nocoeff\n"
 
 
 SHEAR = """plugin load ${{plugin}}
