@@ -120,7 +120,7 @@ settling-sphere: build
 	$(PY) examples/settling_sphere/plot_settling_sphere.py --out $(BUILD)/settling_sphere
 	$(PY) examples/settling_sphere/compare_experiments.py --out $(BUILD)/settling_sphere
 
-# A dense suspension in simple shear at five solid fractions (St 1e-3, limit implicit): mu(J),
+# A dense suspension in simple shear at six solid fractions (St 1e-3, limit implicit): mu(J),
 # phi(J) and eta_s(phi) beside the laws of Boyer, Guazzelli & Pouliquen (2011), CSV + PNG.
 suspension: build
 	$(PY) examples/suspension_shear/run_suspension.py --out $(BUILD)/suspension

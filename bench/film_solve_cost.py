@@ -130,7 +130,7 @@ def prepare(case, args, out):
     """Packing and warm-up of one case: the data file the timed runs start from."""
     n, phi = case.split(":")
     work = out / f"n{n}_phi{phi}"
-    lammps_run.run(packing_script(), work / "packing", {"n": n, "phi": phi, "nc": 8})
+    lammps_run.run(packing_script(), work / "packing", {"n": n, "phi": phi, "nc": 8, "gtc": 1e-3})
     warm = SHEAR.format(data=str((work / "packing" / "packing.data").resolve()), solve="tolerance 1e-4",
                         sample=SAMPLED, steps=args.warmup, tail="write_data warm.data nocoeff")
     lammps_run.run(warm, work / "warmup")

@@ -445,6 +445,13 @@ def main():
 DIFFERENCES = """What differs between the two models, with the parameters chosen to match (R = 2 r_i r_j /
 (r_i + r_j), eps = gap / R; for two equal spheres of radius a, R = a):
 
+- Pairwise films: the peer's are not, for unequal radii. It evaluates each film from both
+  spheres' sides, the response to the imposed strain with 2 r_i in place of r_i + r_j, so an
+  unequal pair gets a net force 2 a_sq (n.E.n)(r_j - r_i) (bench/peer_pair_check.py: 117 times
+  the Stokes drag at the shear velocity for radii a and 1.4 a at the saturation gap; LAMMPS
+  issue 1933). Here its contacts keep compressing (at strain 0.5, 24 to 75 pairs past 1 % of R
+  and up to 3-6 %, still growing; the plugin's below 1 %) and its CG slows down.
+  bench/suspension_peer_mono.py compares the two with equal radii, where they are pairwise.
 - Squeeze film: the plugin 6 pi eta_f R u_n [lambda(max(eps, eps_1)) - lambda(eps_al)], lambda =
   1/(2 eps) - 9/20 ln eps + ...; lubricateU/poly 6 pi eta_f a [1/(4 h) + 9/40 ln(1/h) + O(h ln h)]
   (h = gap / a, Jeffrey-Onishi coefficients for unequal spheres). The plugin's singular terms are

@@ -42,7 +42,7 @@ SAMPLES_PER_STRAIN = 2000
 def packing(out, phi, args):
     path = (out / "packings" / f"phi{phi:.2f}.data").resolve()
     if not path.exists():
-        variables = {"n": args.n, "phi": phi, "nc": 8, "strain": 0.002, "average": 0.001, "packing": 1,
+        variables = {"n": args.n, "phi": phi, "nc": 8, "gtc": 1e-3, "strain": 0.002, "average": 0.001, "packing": 1,
                      "packing_file": path.name, "thermo": 100000}
         lammps_run.run(SCRIPT.read_text(), path.parent, variables, name=f"phi{phi:.2f}.in")
     return path
@@ -54,7 +54,7 @@ def shear(out, phi, mu_c, nc, args):
     log_path = work / "in.suspension_shear.log"
     if not (args.reuse and log_path.exists() and "RESULT mu" in log_path.read_text()):
         steps_per_strain = nc / 1e-3               # gdot t_c = 1e-3
-        variables = {"n": args.n, "phi": phi, "mu_c": mu_c, "nc": nc, "strain": args.strain,
+        variables = {"n": args.n, "phi": phi, "mu_c": mu_c, "nc": nc, "gtc": 1e-3, "strain": args.strain,
                      "average": args.average, "packing": 2, "packing_file": packing(out, phi, args),
                      "series": max(1, round(steps_per_strain / SAMPLES_PER_STRAIN)), "thermo": 1000000}
         lammps_run.run(SCRIPT.read_text(), work, variables, name="in.suspension_shear", timeout=6 * 3600)

@@ -2,7 +2,7 @@
 solid fractions, against the experimental laws of dense non-Brownian suspensions.
 
 Each run shears 300 bidisperse spheres (radii a and 1.4 a, equal volumes, rho_p = rho_f) at
-St = rho gdot a^2 / eta_f = 1e-3 (gdot t_c = 1e-3, N_c 8) to a strain of 1 with the films solved
+St = rho gdot a^2 / eta_f = 1e-3 (gdot t_c = 2.5e-4, N_c 8) to a strain of 1 with the films solved
 together where the film budget binds (limit implicit), friction mu_c 0.5 (and 0 with
 --frictionless), and averages the stress over the second half of the strain:
 the friction coefficient mu = sigma_xy / P, the viscous number J = eta_f gdot / P and the
@@ -29,7 +29,7 @@ sys.path.insert(0, str(ROOT / "tools"))
 import lammps_run  # noqa: E402
 
 MU_1, MU_2, J_0, PHI_M = 0.32, 0.7, 0.005, 0.585     # Boyer, Guazzelli & Pouliquen (2011)
-PHIS = [0.45, 0.50, 0.54, 0.56, 0.58]
+PHIS = [0.45, 0.50, 0.54, 0.56, 0.58, 0.60]
 STRAIN = 1.0          # shear strain of each run; the stress is averaged over its second half
 COLUMNS = ["phi", "mu_c", "limit", "strain", "St", "J", "mu", "eta_s", "P", "sigma_xy",
            "iterations", "seconds"]
@@ -44,7 +44,8 @@ def phi_of_j(j):
 
 
 def maron_pierce(phi):
-    return (1.0 - phi / PHI_M) ** -2
+    """(1 - phi / phi_m)^-2 below phi_m; not defined (nan) at and above it."""
+    return (1.0 - phi / PHI_M) ** -2 if phi < PHI_M else float("nan")
 
 
 def shear(phi, out, mu_c=0.5, limit="implicit", strain=STRAIN):
@@ -69,7 +70,7 @@ def plot(rows, out):
     ax_mu.plot(j, mu_of_j(j), "k-", label="Boyer et al. (2011)")
     ax_phi.plot(j, phi_of_j(j), "k-", label="Boyer et al. (2011)")
     phi = np.linspace(0.3, 0.575, 200)
-    ax_eta.plot(phi, maron_pierce(phi), "k-", label=f"Maron-Pierce, phi_m = {PHI_M}")
+    ax_eta.plot(phi, (1.0 - phi / PHI_M) ** -2, "k-", label=f"Maron-Pierce, phi_m = {PHI_M}")
     ax_eta.plot(phi_of_j(j), mu_of_j(j) / j, "k--", label="Boyer et al.: mu(J) / J at phi(J)")
     styles = {("implicit", 0.5): ("o", "C0", "limit implicit, mu_c 0.5"),
               ("implicit", 0.0): ("s", "C1", "limit implicit, mu_c 0"),
@@ -85,7 +86,9 @@ def plot(rows, out):
                     label=label)
     for ax in (ax_mu, ax_phi):
         ax.set_xscale("log")
+        ax.set_xlim(1e-4, 3.0)           # a nearly pressureless run (J >> 1) falls outside
         ax.set_xlabel("J = eta_f gdot / P")
+    ax_mu.set_ylim(0.0, 3.5)
     ax_mu.set_ylabel("mu = sigma_xy / P")
     ax_phi.set_ylabel("solid fraction phi")
     ax_eta.set_yscale("log")
