@@ -1,7 +1,8 @@
 """The coupled film solve against lubricateU/poly where the peer's films are pairwise: equal radii.
 
-    .venv/bin/python bench/suspension_peer_mono.py            # phi 0.40 0.45 0.50, about 10 min
+    .venv/bin/python bench/suspension_peer_mono.py            # phi 0.40 0.45 0.50, about 20 min
     .venv/bin/python bench/suspension_peer_mono.py --quick    # phi 0.45, squeeze films, 1 min
+    .venv/bin/python bench/suspension_peer_mono.py --gtc 2.5e-4 --peer-steps 2e-4 1e-4   # stiffer contacts
 
 bench/suspension_peer.py shears bidisperse packings (radii a and 1.4 a). There lubricateU/poly's
 film forces are not pairwise (bench/peer_pair_check.py: a lone pair of unequal spheres at the
@@ -19,8 +20,10 @@ same contacts and cutoffs), for two sets of films:
            (flaglog 1): the peer adds the log part of the squeeze film and the pump term (the
            films' torque against the relative spin), which the plugin has not.
 
-Arms: the plugin at N_c 8 and 16, the peer at gdot dt 5e-4 and 2.5e-4 (and 1e-3 once per
-packing); the verdict lines give eta_s plugin / peer of the finest arms and the cost per unit
+Arms: the plugin at N_c 8 and 16, the peer at gdot dt 5e-4 and 2.5e-4 (--peer-steps; and at
+twice the first with a short time-out); --gtc sets both engines' contact duration (gdot t_c,
+default 1e-3; examples/suspension_shear uses 2.5e-4, where the contacts no longer set the
+stress). The verdict lines give eta_s plugin / peer of the finest arms and the cost per unit
 strain of the arms converged to 5 %. Output: the tables on stdout and section
 suspension-peer-mono of --results (default bench/RESULTS.md, 'none' to skip). Scratch:
 build/bench-suspension-peer-mono (wiped at the start).
@@ -43,19 +46,20 @@ ENGINES = {"full": (peer.PLUGIN_ENGINE, peer.PEER_ENGINE),
                        peer.PEER_ENGINE.replace("{eta} 1 {cin_global}", "{eta} 0 {cin_global}"))}
 
 
-def arms(quick):
-    nc = (8, 16)
-    plugin = [("plugin", peer.GTC / peer.GDOT / c) for c in nc]
-    return plugin + [("peer", g / peer.GDOT) for g in ((5e-4,) if quick else (5e-4, 2.5e-4))]
+def arms(quick, peer_steps):
+    """The plugin at N_c 8 and 16; the peer at the given gdot dt (the first only with quick)."""
+    plugin = [("plugin", peer.GTC / peer.GDOT / c) for c in (8, 16)]
+    return plugin + [("peer", g / peer.GDOT) for g in (peer_steps[:1] if quick else peer_steps)]
 
 
 def run_films(films, work, phi, n, strain, args):
     """Every arm of one film set on the packing in work; the summarised rows."""
     peer.PLUGIN_ENGINE, peer.PEER_ENGINE = ENGINES[films]
     rows = []
-    todo = arms(args.quick) + ([] if args.quick else [peer.PROBE])
+    probe = [] if args.quick else [("peer", 2 * args.peer_steps[0] / peer.GDOT)]
+    todo = arms(args.quick, args.peer_steps) + probe
     for engine, dt in todo:
-        timeout = args.probe_timeout if (engine, dt) == peer.PROBE else args.timeout
+        timeout = args.probe_timeout if (engine, dt) == todo[-1] and not args.quick else args.timeout
         row = peer.shear(work, engine, dt, strain, args.friction, phi, timeout)
         rows.append(row)
         print(f"{films} phi {phi:.3f} {peer.label(row)}: "
@@ -72,12 +76,17 @@ def main():
     parser.add_argument("--n", type=int, default=200)
     parser.add_argument("--strain", type=float, default=None, help="default 1 (0.5 with --quick)")
     parser.add_argument("--friction", type=float, default=0.5)
+    parser.add_argument("--gtc", type=float, default=peer.GTC,
+                        help="gdot t_c of both engines' contacts (default 1e-3)")
+    parser.add_argument("--peer-steps", type=float, nargs="+", default=[5e-4, 2.5e-4],
+                        help="the peer's gdot dt arms (plus one at twice the first with a short time-out)")
     parser.add_argument("--timeout", type=float, default=900.0)
     parser.add_argument("--probe-timeout", type=float, default=120.0)
     parser.add_argument("--seed", type=int, default=4928)
     parser.add_argument("--out", default=str(ROOT / "build" / "bench-suspension-peer-mono"))
     parser.add_argument("--results", default=str(bench_common.RESULTS))
     args = parser.parse_args()
+    peer.GTC = args.gtc
     phis = args.phis or ([0.45] if args.quick else [0.40, 0.45, 0.50])
     films_sets = args.films or (["squeeze"] if args.quick else ["squeeze", "full"])
     strain = args.strain or (0.5 if args.quick else 1.0)
