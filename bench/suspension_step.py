@@ -42,7 +42,7 @@ SAMPLES_PER_STRAIN = 2000
 def packing(out, phi, args):
     path = (out / "packings" / f"phi{phi:.2f}.data").resolve()
     if not path.exists():
-        variables = {"n": args.n, "phi": phi, "nc": 8, "gtc": 1e-3, "strain": 0.002, "average": 0.001, "packing": 1,
+        variables = {"n": args.n, "phi": phi, "nc": 8, "gtc": args.gtc, "strain": 0.002, "average": 0.001, "packing": 1,
                      "packing_file": path.name, "thermo": 100000}
         lammps_run.run(SCRIPT.read_text(), path.parent, variables, name=f"phi{phi:.2f}.in")
     return path
@@ -53,8 +53,8 @@ def shear(out, phi, mu_c, nc, args):
     work = out / "runs" / f"phi{phi:.2f}_mu{mu_c:.1f}_nc{nc}"
     log_path = work / "in.suspension_shear.log"
     if not (args.reuse and log_path.exists() and "RESULT mu" in log_path.read_text()):
-        steps_per_strain = nc / 1e-3               # gdot t_c = 1e-3
-        variables = {"n": args.n, "phi": phi, "mu_c": mu_c, "nc": nc, "gtc": 1e-3, "strain": args.strain,
+        steps_per_strain = nc / args.gtc
+        variables = {"n": args.n, "phi": phi, "mu_c": mu_c, "nc": nc, "gtc": args.gtc, "strain": args.strain,
                      "average": args.average, "packing": 2, "packing_file": packing(out, phi, args),
                      "series": max(1, round(steps_per_strain / SAMPLES_PER_STRAIN)), "thermo": 1000000}
         lammps_run.run(SCRIPT.read_text(), work, variables, name="in.suspension_shear", timeout=6 * 3600)
@@ -86,7 +86,7 @@ def change(a, b, key):
 def table(rows, args):
     lines = ["# The sheared suspension over the time step (bench/suspension_step.py)", "",
              f"examples/suspension_shear as a user runs it (limit implicit, rotation yes, saturation 1e-3), "
-             f"{args.n} spheres, St 1e-3, gdot t_c 1e-3, one packing per phi, strain {args.strain:g} averaged over "
+             f"{args.n} spheres, St 1e-3, gdot t_c {args.gtc:g}, one packing per phi, strain {args.strain:g} averaged over "
              f"its last {args.average:g} in blocks of {BLOCK:g}; one rank. Changes from N_c 8, with the combined "
              "statistical error.", "",
              "| phi | mu_c | N_c | eta_s | P [Pa] | mu | eta_s change | P change | mu change | loop s |",
@@ -102,10 +102,10 @@ def table(rows, args):
     return "\n".join(lines)
 
 
-def write_csv(rows):
-    CSV.parent.mkdir(parents=True, exist_ok=True)
+def write_csv(rows, path=CSV):
+    path.parent.mkdir(parents=True, exist_ok=True)
     keys = ["phi", "mu_c", "nc", "eta_s", "eta_s_err", "P", "P_err", "mu", "mu_err", "seconds"]
-    with open(CSV, "w", newline="") as f:
+    with open(path, "w", newline="") as f:
         f.write("# bench/suspension_step.py: examples/suspension_shear over N_c (see its docstring)\n")
         writer = csv.DictWriter(f, fieldnames=keys, lineterminator="\n")
         writer.writeheader()
@@ -124,25 +124,31 @@ def main():
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--reuse", action="store_true")
     parser.add_argument("--results", default=str(bench_common.RESULTS))
+    parser.add_argument("--gtc", type=float, default=1e-3, help="gdot t_c of the contacts (the example's: 2.5e-4)")
+    parser.add_argument("--cases", nargs="+", default=None, help="phi:mu_c pairs (default: the six)")
+    parser.add_argument("--section", default="suspension-step", help="section of --results")
+    parser.add_argument("--csv", default=str(CSV), help="the table as CSV ('none' to skip)")
     args = parser.parse_args()
+    cases = [tuple(float(v) for v in c.split(":")) for c in args.cases] if args.cases else CASES
     out = pathlib.Path(args.out)
     os.nice(5)
-    for phi in sorted({phi for phi, _ in CASES}):
+    for phi in sorted({phi for phi, _ in cases}):
         packing(out, phi, args)
-    jobs = [(phi, mu_c, nc) for nc in reversed(NCS) for phi, mu_c in CASES]
+    jobs = [(phi, mu_c, nc) for nc in reversed(NCS) for phi, mu_c in cases]
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         done = dict(zip(jobs, pool.map(lambda job: shear(out, *job, args), jobs)))
     rows = {}
-    for phi, mu_c in CASES:
+    for phi, mu_c in cases:
         rows[(phi, mu_c)] = {}
         for nc in NCS:
             series, seconds = done[(phi, mu_c, nc)]
             rows[(phi, mu_c)][nc] = {**summarise(series, args), "seconds": seconds}
-    write_csv(rows)
+    if args.csv != "none":
+        write_csv(rows, pathlib.Path(args.csv))
     text = table(rows, args)
     print(text)
     if args.results != "none":
-        bench_common.write_section(pathlib.Path(args.results), "suspension-step", text)
+        bench_common.write_section(pathlib.Path(args.results), args.section, text)
 
 
 if __name__ == "__main__":
