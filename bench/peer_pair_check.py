@@ -60,7 +60,7 @@ velocity all set 0 0 0
 neighbor {skin} bin
 timestep 1e-6
 pair_style lubricateU/poly {eta} {flaglog} {cin} {cout} {gdot} 1 0
-pair_coeff * *
+{coeffs}
 fix nve all nve/noforce
 fix shear all deform 1 xy erate {gdot} remap v
 run 1
@@ -73,6 +73,11 @@ print "RESULT y2 $(y[2]:%.12g)"
 """
 
 
+def reduced(r1, r2):
+    """R = 2 r_i r_j / (r_i + r_j), the radius the gaps are normalised by."""
+    return 2.0 * r1 * r2 / (r1 + r2)
+
+
 def squeeze(r1, r2, gap):
     """lubricateU/poly's 1/h squeeze coefficient (its leading Jeffrey-Onishi term)."""
     reduced = r1 * r2 / (r1 + r2)
@@ -82,21 +87,20 @@ def squeeze(r1, r2, gap):
 def check(work, r2, eps, flaglog):
     """One step of the pair; returns D and the prediction, both in units 6 pi eta_f a (gdot a)."""
     r1 = A
-    reduced_r = 2.0 * r1 * r2 / (r1 + r2)
-    gap = eps * reduced_r
+    gap = eps * reduced(r1, r2)
     n = (1.0 / math.sqrt(2.0), -1.0 / math.sqrt(2.0))        # from sphere 2 to sphere 1
     centre = 0.5 * BOX
     dist = r1 + r2 + gap
     x1, y1 = centre + 0.5 * dist * n[0], centre + 0.5 * dist * n[1]
     x2, y2 = centre - 0.5 * dist * n[0], centre - 0.5 * dist * n[1]
     big = max(r1, r2)
+    # per type pair: cutinner and cutoff at eps 1e-3 and 0.1 of that pair's R
+    coeffs = "\n".join(f"pair_coeff {i} {j} {ri + rj + SATURATION * reduced(ri, rj)!r} "
+                       f"{ri + rj + ACTIVATION * reduced(ri, rj)!r}"
+                       for i, j, ri, rj in ((1, 1, r1, r1), (1, 2, r1, r2), (2, 2, r2, r2)))
     script = SCRIPT.format(box=BOX, x1=x1, y1=y1, x2=x2, y2=y2, z=centre, d1=2 * r1, d2=2 * r2, rho=RHO,
-                           skin=0.5 * A, eta=ETA_F, flaglog=flaglog, gdot=GDOT,
+                           skin=0.5 * A, eta=ETA_F, flaglog=flaglog, gdot=GDOT, coeffs=coeffs,
                            cin=2 * big * (1 + SATURATION / 2), cout=2 * big * (1 + 4 * ACTIVATION))
-    coeffs = (f"pair_coeff 1 1 {2 * r1 * (1 + SATURATION / 2)!r} {2 * r1 * (1 + ACTIVATION / 2)!r}\n"
-              f"pair_coeff 1 2 {r1 + r2 + SATURATION * reduced_r!r} {r1 + r2 + ACTIVATION * reduced_r!r}\n"
-              f"pair_coeff 2 2 {2 * r2 * (1 + SATURATION / 2)!r} {2 * r2 * (1 + ACTIVATION / 2)!r}")
-    script = script.replace("pair_coeff * *", coeffs)
     result, _ = lammps_run.run(script, work, name=f"in.pair_r{r2 / A:g}_log{flaglog}_eps{eps:g}")
     unit = 6.0 * math.pi * ETA_F * A * GDOT * A
     drag = sum(6.0 * math.pi * ETA_F * r * (result[f"vx{k}"] - GDOT * result[f"y{k}"])

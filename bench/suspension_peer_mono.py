@@ -52,14 +52,14 @@ def arms(quick, peer_steps):
     return plugin + [("peer", g / peer.GDOT) for g in (peer_steps[:1] if quick else peer_steps)]
 
 
-def run_films(films, work, phi, n, strain, args):
+def run_films(films, work, phi, strain, args):
     """Every arm of one film set on the packing in work; the summarised rows."""
     peer.PLUGIN_ENGINE, peer.PEER_ENGINE = ENGINES[films]
     rows = []
     probe = [] if args.quick else [("peer", 2 * args.peer_steps[0] / peer.GDOT)]
     todo = arms(args.quick, args.peer_steps) + probe
     for engine, dt in todo:
-        timeout = args.probe_timeout if (engine, dt) == todo[-1] and not args.quick else args.timeout
+        timeout = args.probe_timeout if (engine, dt) in probe else args.timeout
         row = peer.shear(work, engine, dt, strain, args.friction, phi, timeout)
         rows.append(row)
         print(f"{films} phi {phi:.3f} {peer.label(row)}: "
@@ -102,7 +102,7 @@ def main():
             work = base / films
             work.mkdir()
             shutil.copy(base / "pack.data", work / "pack.data")
-            results[films].append((measured, run_films(films, work, measured, args.n, strain, args)))
+            results[films].append((measured, run_films(films, work, measured, strain, args)))
     lines = ["# Dense suspension, equal radii: the coupled film solve against lubricateU/poly "
              "(bench/suspension_peer_mono.py)", "",
              f"{args.n} spheres of one radius, St {peer.ST:g}, mu_c {args.friction}, gdot t_c {peer.GTC:g}, "
