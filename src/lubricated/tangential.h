@@ -223,6 +223,21 @@ __attribute__((always_inline)) inline double shear_film_damping(const Tangential
   return factor * tangential_mass / m.dt;
 }
 
+// Rolling film (doc/model.rst, Shear film: the rolling mode): Jeffrey & Onishi's (J. Fluid Mech.
+// 139, 261, 1984) leading logarithms of Y^A, Y^B and Y^C of two spheres of any size ratio are a
+// dissipation alpha |s|^2 + 2 beta s.(w x n) + gamma |w|^2 in the slip s and the relative spin
+// w = P_t (omega_i - omega_j); the shear film above is the alpha term (exact for equal spheres)
+// and the rolling term a torque -gamma w on i, +gamma w on j with gamma = (24/5) pi mu_f R_e^3
+// ln(1/eps). Coefficient [torque / angular velocity] at normalised gap eps, activated, saturated
+// and released like the shear film. Not yet applied by the engines (the pair style, the walls).
+inline double roll_film_coefficient(double viscosity, double eps, double eps_al, double eps_saturation,
+                                    double eps_release, double reduced_radius)
+{
+  if (!(eps < eps_al && eps > eps_release)) return 0.0;
+  const double cube = reduced_radius * reduced_radius * reduced_radius;
+  return 24.0 / 5.0 * pi * viscosity * cube * std::log(eps_al / std::max(eps, eps_saturation));
+}
+
 // Whether a normalised gap eps lies in the shear film: between eps_release and eps_al.
 __attribute__((always_inline)) inline bool in_shear_film(double eps, double eps_al, double eps_release)
 {
