@@ -45,10 +45,10 @@ TEST(RollFilm, CompletesJeffreyOnishiForAnySizeRatio)
     const double beta = alpha * a1 + yb11(l) * 4.0 * pi * mu * a1 * a1 * log_inverse;
     // roll_film_coefficient with eps_al = 1 and no saturation: ln(1 / eps).
     const double gamma = roll_film_coefficient(mu, eps, 1.0, 0.0, -1.0, r_e);
-    const double c11 = a1 * a1 * alpha - 2.0 * a1 * beta + gamma;    // -dT_1/dw_1
-    const double c12 = a1 * a2 * alpha + (a1 - a2) * beta - gamma;   // -dT_1/dw_2
-    const double c22 = a2 * a2 * alpha + 2.0 * a2 * beta + gamma;    // -dT_2/dw_2
-    const double b22 = a2 * alpha + beta;                            // -dF_2/dw_2
+    const double c11 = a1 * a1 * alpha - 2.0 * a1 * beta + gamma;     // -dT_1/dw_1
+    const double c12 = a1 * a2 * alpha + (a1 - a2) * beta - gamma;    // -dT_1/dw_2
+    const double c22 = a2 * a2 * alpha + 2.0 * a2 * beta + gamma;     // -dT_2/dw_2
+    const double b22 = a2 * alpha + beta;                             // -dF_2/dw_2
     const double scale = pi * mu * log_inverse;
     EXPECT_NEAR(c11, yc11(l) * 8.0 * scale * a1 * a1 * a1, 1e-12 * c11) << l;
     EXPECT_NEAR(c12, yc12(l) * scale * std::pow(a1 + a2, 3), 1e-12 * c11) << l;
@@ -70,9 +70,9 @@ TEST(RollFilm, EqualSpheres)
 
 TEST(RollFilm, ActsWhereTheShearFilmActs)
 {
-  EXPECT_EQ(roll_film_coefficient(1.0, 0.2, 0.1, 1e-3, 1e-4, 1.0), 0.0);       // beyond activation
+  EXPECT_EQ(roll_film_coefficient(1.0, 0.2, 0.1, 1e-3, 1e-4, 1.0), 0.0);      // beyond activation
   EXPECT_EQ(roll_film_coefficient(1.0, 5e-5, 0.1, 1e-3, 1e-4, 1.0), 0.0);     // released
   EXPECT_DOUBLE_EQ(roll_film_coefficient(1.0, 5e-4, 0.1, 1e-3, 1e-4, 1.0),    // saturated
                    roll_film_coefficient(1.0, 1e-3, 0.1, 1e-3, 1e-4, 1.0));
-  EXPECT_EQ(roll_film_coefficient(1.0, 0.1, 0.1, 1e-3, 1e-4, 1.0), 0.0);      // continuous at eps_al
+  EXPECT_EQ(roll_film_coefficient(1.0, 0.1, 0.1, 1e-3, 1e-4, 1.0), 0.0);    // continuous at eps_al
 }
