@@ -7,7 +7,8 @@ together where the film budget binds (limit implicit), friction mu_c 0.5 (and 0 
 --frictionless), and averages the stress over the second half of the strain:
 the friction coefficient mu = sigma_xy / P, the viscous number J = eta_f gdot / P and the
 relative viscosity eta_s = 1 + sigma_xy / (eta_f gdot). One solid fraction is run again with the
-film budget alone (limit atom) to show what the solve changes.
+film budget alone (limit atom) to show what the solve changes. --rollfilm adds the films' rolling
+term (pair_coeff rollfilm yes).
 
 The laws (Boyer, Guazzelli & Pouliquen 2011, PRL 107:188301, fitted to their pressure-imposed
 rheometry of PMMA and polystyrene spheres in viscous oils):
@@ -48,10 +49,10 @@ def maron_pierce(phi):
     return (1.0 - phi / PHI_M) ** -2 if phi < PHI_M else float("nan")
 
 
-def shear(phi, out, mu_c=0.5, limit="implicit", strain=STRAIN):
+def shear(phi, out, mu_c=0.5, limit="implicit", strain=STRAIN, rollfilm="no"):
     script = (ROOT / "examples" / "suspension_shear" / "in.suspension_shear").read_text()
     variables = {"phi": phi, "mu_c": mu_c, "limit": limit, "strain": strain,
-                 "average": strain / 2}
+                 "average": strain / 2, "rollfilm": rollfilm}
     start = time.perf_counter()
     result, _ = lammps_run.run(script, out / "runs" / f"phi{phi}_mu{mu_c}_{limit}", variables,
                                name="in.suspension_shear")
@@ -109,13 +110,16 @@ def main():
     parser.add_argument("--out", default=str(ROOT / "build" / "suspension"))
     parser.add_argument("--frictionless", action="store_true",
                         help="also run every solid fraction with mu_c 0")
+    parser.add_argument("--rollfilm", action="store_true",
+                        help="the films' rolling term on (pair_coeff rollfilm yes)")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    rows = [shear(phi, out) for phi in PHIS]
-    rows.append(shear(0.54, out, limit="atom"))
+    roll = "yes" if args.rollfilm else "no"
+    rows = [shear(phi, out, rollfilm=roll) for phi in PHIS]
+    rows.append(shear(0.54, out, limit="atom", rollfilm=roll))
     if args.frictionless:
-        rows += [shear(phi, out, mu_c=0.0) for phi in PHIS]
+        rows += [shear(phi, out, mu_c=0.0, rollfilm=roll) for phi in PHIS]
     with open(out / "suspension.csv", "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=COLUMNS)
         writer.writeheader()

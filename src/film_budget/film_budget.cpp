@@ -29,7 +29,8 @@ FilmBudget::FilmBudget(LAMMPS *lmp, AtomVectorComm &exchange) :
 
 FilmBudget::~FilmBudget() = default;
 
-void FilmBudget::init(bool limit_atom, bool wet_pairs, bool shear_films, const FilmSolveSettings &solve)
+void FilmBudget::init(bool limit_atom, bool wet_pairs, bool shear_films, const FilmSolveSettings &solve,
+                      bool roll_films)
 {
   limit_per_atom = limit_atom || solve.on;
   solve_on = solve.on;
@@ -45,7 +46,8 @@ void FilmBudget::init(bool limit_atom, bool wet_pairs, bool shear_films, const F
     any_wet_participant = any_wet_participant || participant->wet();
   }
   enabled = limit_per_atom && (wet_pairs || any_wet_participant);
-  shear_records = enabled && shear_films;
+  shear_records = enabled && (shear_films || roll_films);
+  roll_records = enabled && roll_films;
   if (!enabled) scale_of_atom.clear();
 }
 
@@ -151,9 +153,13 @@ bool FilmBudget::films_can_exceed_budget(const NeighList *list, const TypeTables
     // The contact's share is the larger of its normal and shear films' (lubricated/film_budget.h).
     const double m_e = lub::reduced_mass(rmass[i], rmass[j]);
     const double reduced_radius = radius[i] * radius[j] / (radius[i] + radius[j]);
-    return std::max(lub::film_share_bound(film, radius_ij.value, m_e, dt),
-                    lub::shear_film_share_bound(model.tangential, film, radius_ij.value, reduced_radius,
-                                                lub::tangential_mass_ratio * m_e, dt));
+    const double rolling_inertia =
+        1.0 / (1.0 / lub::sphere_inertia(rmass[i], radius[i]) + 1.0 / lub::sphere_inertia(rmass[j], radius[j]));
+    return std::max(
+        lub::film_share_bound(film, radius_ij.value, m_e, dt),
+        lub::shear_film_share_bound(model.tangential, film, radius_ij.value, reduced_radius,
+                                    lub::tangential_mass_ratio * m_e, dt) +
+            lub::roll_film_share_bound(model.tangential, film, radius_ij.value, reduced_radius, rolling_inertia, dt));
   });
 }
 
@@ -169,13 +175,15 @@ template <class T> static void resize_exactly(std::vector<T> &v, std::size_t siz
 void FilmBudget::reserve_records(int more)
 {
   if (nrecord + more <= static_cast<int>(record_i.size()) &&
-      (!shear_records || record_shear.size() >= 3 * record_i.size()))
+      (!shear_records || record_shear.size() >= 3 * record_i.size()) &&
+      (!roll_records || record_roll.size() >= 3 * record_i.size()))
     return;
   const std::size_t need = nrecord + more, size = need + need / 8;
   resize_exactly(record_i, size);
   resize_exactly(record_j, size);
   resize_exactly(record_force, size);
   if (shear_records) resize_exactly(record_shear, 3 * size);
+  if (roll_records) resize_exactly(record_roll, 3 * size);
 }
 
 // Loads summed on the owners, scales sent to the ghosts, then every film whose atoms are over
@@ -202,9 +210,10 @@ void FilmBudget::finish(const double *inverse_mass, Tally *tally, const StepInpu
   if (!any_over) return;
   exchange.forward(scale, 1);
   if (solve_on && step)
-    solve_step->solve(
-        {record_i.data(), record_j.data(), record_force.data(), shear_records ? record_shear.data() : nullptr, nrecord},
-        scale, tables, *step, tally);
+    solve_step->solve({record_i.data(), record_j.data(), record_force.data(),
+                       shear_records ? record_shear.data() : nullptr, nrecord,
+                       roll_records ? record_roll.data() : nullptr},
+                      scale, tables, *step, tally);
   else if (shear_records)
     scale_films_and_shear(tally);
   else
@@ -236,7 +245,8 @@ void FilmBudget::scale_films(Tally *tally)
 }
 
 // With shear films: per record, (s - 1) times the normal film along n and the shear film at the
-// contact points, with its torques -R_i n x f and -R_j n x f (lubricated/tangential.h).
+// contact points, with its torques -R_i n x f and -R_j n x f (lubricated/tangential.h), and the
+// rolling film's torques.
 void FilmBudget::scale_films_and_shear(Tally *tally)
 {
   const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
@@ -260,6 +270,14 @@ void FilmBudget::scale_films_and_shear(Tally *tally)
     torque[i][0] -= radi * nxf.x;
     torque[i][1] -= radi * nxf.y;
     torque[i][2] -= radi * nxf.z;
+    if (roll_records) {    // the rolling film's torque T on i, -T on j
+      const double *roll = &record_roll[3 * r];
+      for (int d = 0; d < 3; d++)
+        torque[i][d] += (s - 1.0) * roll[d];
+      if (newton_pair || j < nlocal)
+        for (int d = 0; d < 3; d++)
+          torque[j][d] -= (s - 1.0) * roll[d];
+    }
     if (newton_pair || j < nlocal) {
       f[j][0] -= fx;
       f[j][1] -= fy;
@@ -285,6 +303,7 @@ int FilmBudget::solved_films() const
 double FilmBudget::memory_usage() const
 {
   return solve_step->memory_usage() + (record_i.capacity() + record_j.capacity()) * sizeof(int) +
-         (load_of_atom.capacity() + scale_of_atom.capacity() + record_force.capacity() + record_shear.capacity()) *
+         (load_of_atom.capacity() + scale_of_atom.capacity() + record_force.capacity() + record_shear.capacity() +
+          record_roll.capacity()) *
              sizeof(double);
 }

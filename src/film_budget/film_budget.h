@@ -45,9 +45,11 @@ class FilmBudget : protected Pointers {
 
   // At init_style: the participants (every fix that is one), and whether the budget is kept:
   // under `limit atom` where a pair or a participant has films. shear_films: some type pair
-  // has a shear film, which shares the budget.
+  // has a shear film, which shares the budget; roll_films: some type pair has a rolling film,
+  // which shares it too.
   // solve: `limit implicit` (limit_per_atom too), the films of atoms over budget solved.
-  void init(bool limit_per_atom, bool wet_pairs, bool shear_films, const FilmSolveSettings &solve = {});
+  void init(bool limit_per_atom, bool wet_pairs, bool shear_films, const FilmSolveSettings &solve = {},
+            bool roll_films = false);
   bool kept() const { return enabled; }
   bool wet_participants() const { return any_wet_participant; }
   // This step's: whether the films can exceed any atom's budget (else nothing is recorded or
@@ -80,11 +82,12 @@ class FilmBudget : protected Pointers {
     record_force[nrecord] = film;
     nrecord += film != 0.0;
   }
-  // With shear films (records_shear()): the shear film's force on i too, and the contact's
-  // share, the larger of the normal and shear films' (lubricated/film_budget.h); both films
-  // are scaled by the same s.
+  // With shear or rolling films (records_shear()): the shear film's force on i too, the rolling
+  // film's torque on i where kept, and the contact's share, the larger of the normal film's and
+  // the tangential films' (lubricated/film_budget.h); all films are scaled by the same s.
   __attribute__((always_inline)) inline void record_films(int i, int j, double film, const lubricated::Vec3 &shear,
-                                                          double share, int nlocal, int newton_pair)
+                                                          double share, int nlocal, int newton_pair,
+                                                          const lubricated::Vec3 &roll = {})
   {
     load_of_atom[i] += share;
     if (newton_pair || j < nlocal) load_of_atom[j] += share;
@@ -93,7 +96,13 @@ class FilmBudget : protected Pointers {
     record_force[nrecord] = film;
     double *out = &record_shear[3 * nrecord];
     out[0] = shear.x, out[1] = shear.y, out[2] = shear.z;
-    nrecord += (film != 0.0) | (shear.x != 0.0) | (shear.y != 0.0) | (shear.z != 0.0);
+    bool any = (film != 0.0) | (shear.x != 0.0) | (shear.y != 0.0) | (shear.z != 0.0);
+    if (roll_records) {
+      double *torque = &record_roll[3 * nrecord];
+      torque[0] = roll.x, torque[1] = roll.y, torque[2] = roll.z;
+      any |= (roll.x != 0.0) | (roll.y != 0.0) | (roll.z != 0.0);
+    }
+    nrecord += any;
   }
 
   // What the correction pass tallies (the pair style's energy and virial).
@@ -126,17 +135,17 @@ class FilmBudget : protected Pointers {
 
  private:
   AtomVectorComm &exchange;
-  bool limit_per_atom = true, enabled = false, shear_records = false, any_wet_participant = false;
+  bool limit_per_atom = true, enabled = false, shear_records = false, roll_records = false, any_wet_participant = false;
   bool solve_on = false;
   std::unique_ptr<class FilmSolveStep> solve_step;
   TypeTables tables{};    // begin_step's, for the solve's coefficients
   std::vector<FilmBudgetParticipant *> participants;
   // Per owned and ghost atom: the summed film share and its scale.
   std::vector<double> load_of_atom, scale_of_atom;
-  // Per pair with a film: i, j, its film force along n, and with shear films the shear film's
-  // force (3 per record).
+  // Per pair with a film: i, j, its film force along n, with shear films the shear film's
+  // force and with rolling films the rolling film's torque on i (3 per record each).
   std::vector<int> record_i, record_j;
-  std::vector<double> record_force, record_shear;
+  std::vector<double> record_force, record_shear, record_roll;
   int nrecord = 0;
   bool now = false;
   double bound_dt = 0.0;    // the time step the bounds were computed for

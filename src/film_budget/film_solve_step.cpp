@@ -73,6 +73,13 @@ void FilmSolveStep::gather_atoms(const FilmBudget::StepInputs &step)
   }
 }
 
+// The step-exact rolling film the loops applied to record r: its torque on i (on j the opposite).
+static lub::Vec3 recorded_roll(const FilmSolveStep::Records &records, int r)
+{
+  if (!records.roll) return {};
+  return {records.roll[3 * r], records.roll[3 * r + 1], records.roll[3 * r + 2]};
+}
+
 // F of the solve, per atom: the forces and torques the pair loops gave this evaluation (the
 // contacts, the films outside the solve) less the step-exact films of the solved links, summed on
 // the owners. With F = 0 a solved film would meet a contact's push of this step only at the next
@@ -97,11 +104,14 @@ void FilmSolveStep::gather_other_forces(const Records &records)
                                 : lub::Vec3{};
     const lub::Vec3 applied = lub::plus(lub::scaled(link.normal, records.film[r]), shear);
     const lub::Vec3 nxs = lub::cross(link.normal, shear);    // the applied torques were -R n x F_t
+    const lub::Vec3 roll = recorded_roll(records, r);
     lub::film_add(&other_force[lub::film_dofs * i], applied, -1.0);
     lub::film_add(&other_force[lub::film_dofs * i + 3], nxs, radius[i]);
+    lub::film_add(&other_force[lub::film_dofs * i + 3], roll, -1.0);
     if (newton_pair || j < nlocal) {
       lub::film_add(&other_force[lub::film_dofs * j], applied, 1.0);
       lub::film_add(&other_force[lub::film_dofs * j + 3], nxs, radius[j]);
+      lub::film_add(&other_force[lub::film_dofs * j + 3], roll, 1.0);
     }
   }
   if (newton_pair) exchange.reverse(other_force.data(), lub::film_dofs);
@@ -173,7 +183,7 @@ void FilmSolveStep::solve(const Records &records, const double *scale, const Fil
 
 // Per link: its force at w' (the solved film) in place of the step-exact film the loops applied,
 // on i and j (Newton's third law, as the pair loops apply it: on j where newton is on or j is
-// owned), with torques -R n x F_t, and tallied.
+// owned), with torques -R n x F_t and the rolling film's, and tallied.
 void FilmSolveStep::apply_solved_films(const Records &records, FilmBudget::Tally *tally)
 {
   lub::FilmAtoms atoms;
@@ -191,10 +201,11 @@ void FilmSolveStep::apply_solved_films(const Records &records, FilmBudget::Tally
                                 : lub::Vec3{};
     const lub::Vec3 applied = lub::plus(lub::scaled(link.normal, records.film[r]), shear);
     const lub::Vec3 change = lub::minus(solved.force_i, applied);
-    // The step-exact shear film's torques were -R n x F_t on both atoms.
-    const lub::Vec3 nxs = lub::cross(link.normal, shear);
-    const lub::Vec3 torque_i = lub::plus(solved.torque_i, lub::scaled(nxs, radius[i]));
-    const lub::Vec3 torque_j = lub::plus(solved.torque_j, lub::scaled(nxs, radius[j]));
+    // The step-exact shear film's torques were -R n x F_t on both atoms, the rolling film's T on i
+    // and -T on j.
+    const lub::Vec3 nxs = lub::cross(link.normal, shear), roll = recorded_roll(records, r);
+    const lub::Vec3 torque_i = lub::minus(lub::plus(solved.torque_i, lub::scaled(nxs, radius[i])), roll);
+    const lub::Vec3 torque_j = lub::plus(lub::plus(solved.torque_j, lub::scaled(nxs, radius[j])), roll);
     f[i][0] += change.x, f[i][1] += change.y, f[i][2] += change.z;
     torque[i][0] += torque_i.x, torque[i][1] += torque_i.y, torque[i][2] += torque_i.z;
     if (newton_pair || j < nlocal) {

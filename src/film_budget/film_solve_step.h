@@ -38,6 +38,7 @@ class FilmSolveStep : protected Pointers {
     const int *i, *j;
     const double *film, *shear;
     int count;
+    const double *roll = nullptr;    // the rolling films' torques on i (3 per record), where kept
   };
   // The films of every record with an atom whose scale (owned and ghost) is below 1 are solved
   // at the velocities the evaluation took, their step-exact forces replaced by the solved ones.

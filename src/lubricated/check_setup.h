@@ -27,6 +27,9 @@ inline SetupCheck check_setup(const Coefficients &c, Partner partner, double dt)
   if (check.error.empty() && c.wet() && c.dem_activation() && partner != Partner::wall)
     check.error = "activation dem is for walls (fix wall/lubrication); between spheres give activation eps_al or grid "
                   "dx (doc/model.rst, \"DEM without a resolved fluid\")";
+  if (check.error.empty() && c.wet() && c.roll_film() && partner == Partner::wall)
+    check.error = "rollfilm is for pairs of spheres (pair_style lubricated/springdashpot): at a wall the shear film "
+                  "is not the slip term of Jeffrey and Onishi's split (doc/model.rst, \"The rolling mode\")";
   if (!check.error.empty()) return check;
   for (const std::string &w : {time_step_warning(c, dt), calibration_warning(c, partner)})
     if (!w.empty()) check.warnings.push_back(w);
@@ -42,10 +45,10 @@ inline SetupCheck check_setup(const Coefficients &c, Partner partner, double dt)
                       (c.wet() ? "film mu_f = " + detail::number(c.viscosity) + dem + ", " : "dry, ") +
                       (c.exact_contact ? "integration exact" : "integration sampled");
   if (c.tangential())
-    check.tangential = "friction mu_c = " + detail::number(c.friction) +
-                       ", e_t = " + detail::number(c.tangential_restitution()) +
-                       ", rolling mu_r = " + detail::number(c.rolling_friction) + ", shear film " +
-                       (c.wet() && c.shear_film() ? "on" : "off");
+    check.tangential =
+        "friction mu_c = " + detail::number(c.friction) + ", e_t = " + detail::number(c.tangential_restitution()) +
+        ", rolling mu_r = " + detail::number(c.rolling_friction) + ", shear film " +
+        (c.wet() && c.shear_film() ? "on" : "off") + ", rolling film " + (c.wet() && c.roll_film() ? "on" : "off");
   return check;
 }
 

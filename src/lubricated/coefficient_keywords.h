@@ -5,6 +5,7 @@
 //   e_d [ncontact N | tcontact t_c] [viscosity mu_f] [activation eps_al | activation dem | grid dx]
 //       [saturation eps_1] [release eps_2] [integration exact | sampled]
 //       [friction mu_c] [tangential e_t] [rolling mu_r] [shearfilm yes | no] [legendre A]
+//       [rollfilm yes | no]
 //
 // A new coefficient is a member of Coefficients, an entry of keyword::Id and a row of
 // coefficient_keywords (appended: the row's index is its place in restart files), plus its
@@ -35,6 +36,7 @@ enum Id : int {
   rolling,
   shearfilm,
   legendre,
+  rollfilm,
   count
 };
 }    // namespace keyword
@@ -100,6 +102,9 @@ inline constexpr CoefficientKeyword coefficient_keywords[keyword::count] = {
      [](Coefficients &c, double v) { c.shearfilm = static_cast<int>(v); }, nullptr},
     {keyword::legendre, "legendre", "lubricatedLegendre", "A >= 0", {},
      [](const Coefficients &c) { return c.legendre; }, [](Coefficients &c, double v) { c.legendre = v; }, nullptr},
+    {keyword::rollfilm, "rollfilm", nullptr, nullptr, {{"yes", 1.0}, {"no", 0.0}},
+     [](const Coefficients &c) { return static_cast<double>(c.rollfilm); },
+     [](Coefficients &c, double v) { c.rollfilm = static_cast<int>(v); }, nullptr},
 };
 // clang-format on
 
@@ -135,7 +140,7 @@ inline const CoefficientKeyword *find_keyword(const std::string &word)
   return nullptr;
 }
 
-// "ncontact, tcontact, ... shearfilm or legendre"
+// "ncontact, tcontact, ... legendre or rollfilm"
 inline std::string keyword_list()
 {
   std::string list = coefficient_keywords[keyword::e_d + 1].name;

@@ -35,18 +35,23 @@ struct Coefficients {
   double rolling_friction = 0.0;    // rolling resistance mu_r >= 0 (a length ratio)
   int shearfilm = -1;               // shear film: 1 yes, 0 no, -1 yes when friction > 0
   double legendre = 0.0;            // A > 0: contact calibrated to e / e_d = exp(-A / St)
+  int rollfilm = 0;                 // rolling film (Jeffrey & Onishi's rolling term): 1 yes, 0 no
   // Not a keyword: t_c = N_c dt settled at the first run that uses these coefficients
   // (settle_contact_time); 0 before. Not packed: a restart settles it again at its first run.
   double settled_contact_time = 0.0;
 
-  static constexpr int packed_size = 14;
+  static constexpr int packed_size = 15;
 
   bool wet() const { return viscosity > 0.0; }
   bool dem_activation() const { return eps_activation == activation_dem; }
   double tangential_restitution() const { return e_tangential >= 0.0 ? e_tangential : e_dry; }
   bool shear_film() const { return shearfilm < 0 ? friction > 0.0 : shearfilm == 1; }
+  bool roll_film() const { return rollfilm == 1; }
   // Whether the contact needs the tangential kernel (and, for friction, contact history).
-  bool tangential() const { return friction > 0.0 || rolling_friction > 0.0 || (wet() && shear_film()); }
+  bool tangential() const
+  {
+    return friction > 0.0 || rolling_friction > 0.0 || (wet() && (shear_film() || roll_film()));
+  }
   double contact_time(double dt) const
   {
     return t_contact > 0.0 ? t_contact : settled_contact_time > 0.0 ? settled_contact_time : n_contact * dt;

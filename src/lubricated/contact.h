@@ -58,7 +58,8 @@ struct ContactPoint {
   // v_i - v_j and the spins as the engine holds them, the lever arms, R_e = R_i R_j / (R_i + R_j)
   // and the masses of the spheres that turn with the contact (solid spheres, for the rolling
   // inertia; 0: this side does not turn with it: a wall, an immovable atom; read only in overlap
-  // with rolling resistance, so an engine may leave them unset elsewhere).
+  // with rolling resistance and, between spheres, by the rolling film, so an engine may leave
+  // them unset elsewhere).
   Vec3 n, dv, omega_i, omega_j;
   double radius_i = 0.0, radius_j = 0.0, reduced_radius = 0.0;
   double mass_i = 0.0, mass_j = 0.0;
@@ -90,11 +91,17 @@ struct ContactForces {
   Vec3 shear, shear_torque_i;
   Vec3 slip;                       // s (tangential.h)
   double tangential_mass = 0.0;    // m_t = 2/7 m_e
+  // The rolling film's torque on i (on j the opposite; in torque_i and torque_j too) and its
+  // share of the film budget per unit kick time (roll_film_torque).
+  Vec3 roll_film;
+  double roll_share_rate = 0.0;
 
-  // The shear film's share of the film budget for this kick time (film_budget.h).
+  // The tangential films' share of the film budget for this kick time (film_budget.h): the shear
+  // film's and the rolling film's, summed (both act on the spins).
   double shear_share(double kick_time) const
   {
-    return shear_film_share(dot(shear, shear), dot(slip, slip), tangential_mass, kick_time);
+    return shear_film_share(dot(shear, shear), dot(slip, slip), tangential_mass, kick_time) +
+           roll_share_rate * kick_time;
   }
 };
 
@@ -162,14 +169,24 @@ contact_forces(const ContactModel &m, const ContactPoint &p, HistorySlot &histor
     else
       f = plus(f, shear);
   }
-  Vec3 roll;
+  Vec3 roll_film;
+  double roll_share_rate = 0.0;
+  if (!wall && tm.roll_film_active()) {
+    const Lubrication &film = m.normal.lubrication;
+    const double gamma = roll_film_coefficient(tm.roll_mu, p.gap / p.film.value, film.activation_for(p.film.value),
+                                               film.eps_saturation, film.eps_release, p.reduced_radius);
+    roll_film =
+        roll_film_torque(tm, minus(p.omega_i, p.omega_j), p.n, gamma, detail::rolling_inertia(p), roll_share_rate);
+  }
+  Vec3 roll = roll_film;
   if (tm.rolling_active() && p.gap < 0.0)
-    roll = rolling_torque(tm, p.n, wall ? p.omega_i : minus(p.omega_i, p.omega_j), p.reduced_radius,
-                          wall ? sphere_inertia(p.mass_i, p.radius_i) : detail::rolling_inertia(p), normal.contact);
+    roll = plus(roll, rolling_torque(tm, p.n, wall ? p.omega_i : minus(p.omega_i, p.omega_j), p.reduced_radius,
+                                     wall ? sphere_inertia(p.mass_i, p.radius_i) : detail::rolling_inertia(p),
+                                     normal.contact));
   const Vec3 nxf = cross(p.n, f);
   const Vec3 torque_i = plus(scaled(nxf, -p.radius_i), roll);
   const Vec3 torque_j = wall ? Vec3{} : minus(scaled(nxf, -p.radius_j), roll);
-  return ContactForces{normal, f, torque_i, torque_j, shear, shear_torque_i, s, m_t};
+  return ContactForces{normal, f, torque_i, torque_j, shear, shear_torque_i, s, m_t, roll_film, roll_share_rate};
 }
 
 // Loads of a sustained contact of this model for the contact-network check (contact_network.h):

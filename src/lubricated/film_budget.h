@@ -143,6 +143,22 @@ inline double shear_film_share_bound(const TangentialModel &shear, const Lubrica
   return -std::expm1(-rate);
 }
 
+// A bound on the rolling film's share (tangential.h, roll_film_torque) of any pair of film radius
+// R_f, reduced radius R_e and rolling inertia I_e (1/I_e = 1/I_i + 1/I_j): a_r = (1 - exp(-x))
+// t_kick / dt <= 1 - exp(-x_1), x = gamma dt / I_e largest at eps <= eps_1. It acts on the spins,
+// as the shear film does: a contact's tangential share is the sum of the two (the norm of a sum
+// of dampers is at most the sum of their norms), and its share the larger of that and the normal
+// film's (orthogonal: translation along n).
+inline double roll_film_share_bound(const TangentialModel &m, const Lubrication &film, double film_radius,
+                                    double reduced_radius, double rolling_inertia, double dt)
+{
+  if (!m.roll_film_active() || !film.active()) return 0.0;
+  const double eps_al = film.activation_for(film_radius);
+  const double gamma = roll_film_coefficient(m.roll_mu, film.eps_saturation, eps_al, film.eps_saturation,
+                                             std::min(film.eps_release, 0.5 * film.eps_saturation), reduced_radius);
+  return -std::expm1(-gamma * dt / rolling_inertia);
+}
+
 // The shear film's share a_t = |F| t_kick / (m_t |s|) from the squared lengths of its force and
 // the slip (F = -c_t s: parallel), m_t the tangential mass (tangential_mass_ratio m_e).
 inline double shear_film_share(double force_sq, double slip_sq, double tangential_mass, double kick_time)
@@ -166,10 +182,14 @@ inline double pair_film_share_ceiling(const TangentialModel &shear, const Lubric
   const double lambda_al = film.grid_spacing > 0.0 ? film.activation(smallest).lambda : film.lambda_activation;
   const double slope = std::max(0.0, film.lambda_saturated - lambda_al);
   const double normal = std::min(1.0, film.six_pi_mu * r_max * slope * dt * 2.0 / m_min);
-  if (!shear.film_active()) return normal;
+  if (!shear.film_active() && !shear.roll_film_active()) return normal;
   const double log_range = std::max(0.0, std::log(film.activation_for(smallest) / film.eps_saturation));
   const double rate = shear.two_pi_mu * (0.5 * r_max) * log_range * dt / (tangential_mass_ratio * 0.5 * m_min);
-  return std::max(normal, -std::expm1(-rate));
+  // Rolling film: gamma <= (24/5) pi mu_f (r_max / 2)^3 ln(eps_al / eps_1), 1/I_e <= 2 / (0.4 m_min r_min^2).
+  const double half = 0.5 * r_max;
+  const double roll_rate = 24.0 / 5.0 * pi * shear.roll_mu * half * half * half * log_range * dt * 2.0 /
+                           (solid_sphere_inertia_ratio * m_min * r_min * r_min);
+  return std::max(normal, -std::expm1(-rate) - std::expm1(-roll_rate));
 }
 
 // One contact's share of its atoms' loads: the larger of its normal and shear films' shares

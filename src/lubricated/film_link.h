@@ -1,7 +1,8 @@
 // A pair's films as one link of the coupled film solve (film_solve.h, doc/film_solve.rst): the
-// normal film's coefficient c_n (Lubrication::damping) and the shear film's raw coefficient c_t
-// at the step's gap. The engines' pair loops apply the films step-exact; where a sphere's film
-// budget binds they hand the pair's films to the solve with these coefficients instead.
+// normal film's coefficient c_n (Lubrication::damping), the shear film's raw coefficient c_t
+// and the rolling film's gamma (tangential.h) at the step's gap. The engines' pair loops apply
+// the films step-exact; where a sphere's film budget binds they hand the pair's films to the
+// solve with these coefficients instead.
 #pragma once
 
 #include "lubricated/contact.h"
@@ -37,6 +38,11 @@ inline FilmLink pair_film_link(const ContactModel &model, int i, int j, const Ve
   link.shear_damping =
       shear_film_coefficient(model.tangential, eps, film.activation_for(radius.value), film.eps_saturation,
                              film.eps_release, radius_i * radius_j / (radius_i + radius_j));
+  link.roll_damping =
+      model.tangential.roll_film_active()
+          ? roll_film_coefficient(model.tangential.roll_mu, eps, film.activation_for(radius.value), film.eps_saturation,
+                                  film.eps_release, radius_i * radius_j / (radius_i + radius_j))
+          : 0.0;
   return link;
 }
 

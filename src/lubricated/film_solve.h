@@ -6,7 +6,8 @@
 // atoms 0..owned-1 owned and owned..total-1 ghosts (copies of atoms owned elsewhere, or periodic
 // images). Each film k is a linear damper of the step: the normal film -c_n u_n n on i with
 // u_n = n . (v_i - v_j) (lubrication.h, c_n = Lubrication::damping), the shear film -c_t s on i
-// with the slip s of tangential.h, and the opposite force on j with the torques of tangential.h.
+// with the slip s of tangential.h, and the opposite force on j with the torques of tangential.h,
+// and the rolling film's torque -gamma P_t (omega_i - omega_j) on i, the opposite on j.
 // Their resistance R (the generalised force of all films is -R w) is symmetric positive
 // semi-definite. The step solves
 //   (M + dt R) w' = M w + dt (F + f_wall)
@@ -52,6 +53,8 @@ struct FilmLink {
   Vec3 normal;                    // unit normal from j (or the wall) to i
   double normal_damping = 0.0;    // c_n >= 0 [force / velocity]: force -c_n u_n n on i
   double shear_damping = 0.0;     // c_t >= 0 [force / velocity]: force -c_t s on i (raw, not exp-integrated)
+  double roll_damping = 0.0;      // gamma >= 0 [torque / angular velocity]: the rolling film's
+                                  // torque -gamma P_t (omega_i - omega_j) on i, the opposite on j
   Vec3 wall_velocity;             // wall only: velocity of the wall surface at the contact
 };
 
@@ -127,6 +130,11 @@ inline FilmLinkForce film_link_force(const FilmLink &k, const FilmAtoms &atoms, 
   const Vec3 n_cross_shear = cross(k.normal, shear);
   f.torque_i = scaled(n_cross_shear, -radius_i);
   f.torque_j = scaled(n_cross_shear, -radius_j);
+  if (k.roll_damping > 0.0) {
+    const Vec3 roll = scaled(tangential_part(minus(film_vec(wi + 3), omega_j), k.normal), -k.roll_damping);
+    f.torque_i = plus(f.torque_i, roll);
+    f.torque_j = minus(f.torque_j, roll);
+  }
   return f;
 }
 
@@ -189,7 +197,8 @@ inline void film_cholesky_solve(const double *l, int n, double *b)
 // Adds one atom's share c B^T B of a film to its 6x6 resistance block: the normal film
 // c_n n n^T; the shear film with B = [P_t, sign R N] (N w = n x w; sign +1 on i, the slip's
 // rotation term being +R_i n x omega_i, and R_j n x omega_j on j with the translation -P_t):
-// c_t [P_t, sign R N; -sign R N, R^2 P_t] (N^T N = P_t, P_t N = N).
+// c_t [P_t, sign R N; -sign R N, R^2 P_t] (N^T N = P_t, P_t N = N); the rolling film gamma P_t on
+// the spin.
 inline void film_add_block(double *block, const FilmLink &k, double radius, double side)
 {
   const double n[3] = {k.normal.x, k.normal.y, k.normal.z};
@@ -199,7 +208,7 @@ inline void film_add_block(double *block, const FilmLink &k, double radius, doub
     for (int b = 0; b < 3; b++) {
       const double tangent = (a == b ? 1.0 : 0.0) - n[a] * n[b];
       block[a * 6 + b] += k.normal_damping * n[a] * n[b] + ct * tangent;
-      block[(a + 3) * 6 + b + 3] += ct * radius * radius * tangent;
+      block[(a + 3) * 6 + b + 3] += (ct * radius * radius + k.roll_damping) * tangent;
       block[a * 6 + b + 3] += rotation * cross_n[a][b];
       block[(a + 3) * 6 + b] -= rotation * cross_n[a][b];
     }

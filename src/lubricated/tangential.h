@@ -94,10 +94,12 @@ struct TangentialModel {
   double dt = 0.0;
   // Shear film: F = -2 pi mu_f R_e ln(eps_al / max(eps, eps_1)) s for eps_2 < eps < eps_al.
   double two_pi_mu = 0.0;    // 2 pi mu_f = 6 pi mu_f / 3; 0: no shear film
+  double roll_mu = 0.0;      // mu_f of the rolling film (roll_film_coefficient); 0: none
   bool contact_active() const { return friction > 0.0; }
   bool rolling_active() const { return rolling > 0.0; }
   bool film_active() const { return two_pi_mu > 0.0; }
-  bool active() const { return contact_active() || rolling_active() || film_active(); }
+  bool roll_film_active() const { return roll_mu > 0.0; }
+  bool active() const { return contact_active() || rolling_active() || film_active() || roll_film_active(); }
 };
 
 // t_c: the normal contact's duration as integrated (ContactStep::contact_time), so that both
@@ -112,6 +114,7 @@ inline TangentialModel make_tangential_model(const Coefficients &c, double t_c, 
   m.stiffness_step = o.stiffness_step;
   m.damping_step = o.damping_step;
   if (c.wet() && c.shear_film()) m.two_pi_mu = 2.0 * pi * c.viscosity;
+  if (c.wet() && c.roll_film()) m.roll_mu = c.viscosity;
   return m;
 }
 
@@ -229,13 +232,30 @@ __attribute__((always_inline)) inline double shear_film_damping(const Tangential
 // w = P_t (omega_i - omega_j); the shear film above is the alpha term (exact for equal spheres)
 // and the rolling term a torque -gamma w on i, +gamma w on j with gamma = (24/5) pi mu_f R_e^3
 // ln(1/eps). Coefficient [torque / angular velocity] at normalised gap eps, activated, saturated
-// and released like the shear film. Not yet applied by the engines (the pair style, the walls).
+// and released like the shear film (`rollfilm yes`; pairs of spheres only: at a wall the shear
+// film is not the alpha of this split).
 inline double roll_film_coefficient(double viscosity, double eps, double eps_al, double eps_saturation,
                                     double eps_release, double reduced_radius)
 {
   if (!(eps < eps_al && eps > eps_release)) return 0.0;
   const double cube = reduced_radius * reduced_radius * reduced_radius;
   return 24.0 / 5.0 * pi * viscosity * cube * std::log(eps_al / std::max(eps, eps_saturation));
+}
+
+// The rolling film's torque on i over a step (on j the opposite) for the relative spin
+// omega_rel = omega_i - omega_j: the damper -gamma P_t omega_rel integrated exactly over the step
+// with the rolling inertia I_e (1/I_e = 1/I_i + 1/I_j over the sides that turn), -(1 -
+// exp(-x)) I_e P_t omega_rel / dt with x = gamma dt / I_e: it never reverses the relative spin.
+// share_rate: (1 - exp(-x)) / dt, the film budget's share per unit kick time.
+inline Vec3 roll_film_torque(const TangentialModel &m, const Vec3 &omega_rel, const Vec3 &n, double gamma,
+                             double inertia, double &share_rate)
+{
+  share_rate = 0.0;
+  if (!(gamma > 0.0 && inertia > 0.0)) return {};
+  const double rate = gamma * m.dt / inertia;
+  const double factor = rate < 1e-6 ? rate * (1.0 - 0.5 * rate) : -std::expm1(-rate);
+  share_rate = factor / m.dt;
+  return scaled(tangential_part(omega_rel, n), -factor * inertia / m.dt);
 }
 
 // Whether a normalised gap eps lies in the shear film: between eps_release and eps_al.

@@ -164,7 +164,7 @@ void PairLubricatedSpringDashpot::parse_film_solve_keyword(const std::string &ke
 void PairLubricatedSpringDashpot::write_restart_settings(FILE *fp)
 {
   const int flag = (vector_enabled ? 1 : 0) | (limit_per_atom ? 0 : 2) | (trim_enabled ? 0 : 4) |
-                   (any_cutoff_given() ? 8 : 0) | (film_solve.on ? 16 : 0);
+                   (any_cutoff_given() ? 8 : 0) | (film_solve.on ? 16 : 0) | values_with_rollfilm;
   fwrite(&flag, sizeof(int), 1, fp);
   if (!film_solve.on) return;
   fwrite(&film_solve.tolerance, sizeof(double), 1, fp);
@@ -180,6 +180,8 @@ void PairLubricatedSpringDashpot::read_restart_settings(FILE *fp)
   limit_per_atom = (flag & 2) == 0;
   trim_enabled = (flag & 4) == 0;
   restart_cutoffs = (flag & 8) != 0;
+  // Files written before rollfilm (the last keyword) hold one value less per type pair.
+  restart_values = (flag & values_with_rollfilm) ? lub::Coefficients::packed_size : lub::Coefficients::packed_size - 1;
   film_solve = FilmSolveSettings();
   film_solve.on = (flag & 16) != 0;
   if (film_solve.on) {
@@ -365,7 +367,8 @@ void PairLubricatedSpringDashpot::read_restart(FILE *fp)
       if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (!setflag[i][j]) continue;
-      if (me == 0) utils::sfread(FLERR, buf, sizeof(double), lub::Coefficients::packed_size, fp, nullptr, error);
+      lub::Coefficients().pack(buf);    // the defaults of values the file does not hold
+      if (me == 0) utils::sfread(FLERR, buf, sizeof(double), restart_values, fp, nullptr, error);
       MPI_Bcast(buf, lub::Coefficients::packed_size, MPI_DOUBLE, 0, world);
       coeffs[index(i, j)].unpack(buf);
       coeffs[index(j, i)].unpack(buf);

@@ -63,6 +63,7 @@ class PairLubricatedSpringDashpot : public Pair, public FilmBudgetOwner, private
   bool film_reach_uniform = true;                  // one max_reach for all (eval sets it)
   bool any_wet = false;
   bool any_tangential = false;                   // friction, rolling or shear film on some type pair
+  bool any_roll_film = false;                    // a rolling film on some type pair (scalar loops only)
   class FixContactHistory *history = nullptr;    // tangential elongation per contact
   std::string history_id;
   // The placeholder (fix DUMMY) holding the history's place in the fix list while there is none.
@@ -125,7 +126,7 @@ class PairLubricatedSpringDashpot : public Pair, public FilmBudgetOwner, private
   // init_style's steps (pair_lubricated_springdashpot_init.cpp).
   void check_atom_style();
   struct TypePairNeeds {
-    bool friction = false, shear_film = false;
+    bool friction = false, shear_film = false, roll_film = false;
     std::set<std::string> advice;    // the set-up checks' warnings, once each
   };
   TypePairNeeds settle_coefficients();
@@ -133,7 +134,7 @@ class PairLubricatedSpringDashpot : public Pair, public FilmBudgetOwner, private
   void warn_hybrid_instances();
   void find_integrators();
   void choose_loops();
-  void init_film_budget(bool any_shear_film);
+  void init_film_budget(bool any_shear_film, bool any_roll_film);
   void check_grid_spacing();
   void find_largest_radii();
 
@@ -160,6 +161,8 @@ class PairLubricatedSpringDashpot : public Pair, public FilmBudgetOwner, private
   bool any_cutoff_given() const;
   std::string pair_coeff_words(int i, int j) const;    // write_data's words for type pair i j
   bool restart_cutoffs = false;                        // read_restart: the file holds a cutoff per type pair
+  int restart_values = 0;                              // coefficient values per type pair in the restart file read
+  static constexpr int values_with_rollfilm = 32;      // restart flag: the file holds rollfilm's value too
   template <bool WET, bool TANGENTIAL, bool SPLIT, bool UNIFORM_REACH>
   int select_pairs(int &next, int &nfilm, int limit);
   static constexpr int pairs_per_piece = 4096;    // pass 1's pieces (16 chunks of vector_forces)

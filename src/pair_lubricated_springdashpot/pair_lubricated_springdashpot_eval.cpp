@@ -216,7 +216,7 @@ inline void PairLubricatedSpringDashpot::set_tangential_point(const PairLoop &lo
   // An added mass moves with the spheres, not with their turning (contact_mass.h).
   if (inverse && contact_mass.carries_added_mass())
     p.tangential_mass = lub::tangential_mass_of_sides(inverse[i], loop.rmass[i], inverse[j], loop.rmass[j]);
-  if (p.gap < 0.0 && model.tangential.rolling_active()) {
+  if ((p.gap < 0.0 && model.tangential.rolling_active()) || model.tangential.roll_film_active()) {
     // The spheres' own inertia (also in a rigid body); an immovable atom does not turn.
     p.mass_i = inverse && inverse[i] == 0.0 ? 0.0 : loop.rmass[i];
     p.mass_j = inverse && inverse[j] == 0.0 ? 0.0 : loop.rmass[j];
@@ -274,7 +274,7 @@ inline void PairLubricatedSpringDashpot::contact(const PairLoop &loop, int i, in
     if (records) share = lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time);
     if (records && budget.records_shear())
       budget.record_films(i, j, fn.lubrication, c.shear, lub::contact_film_share(share, c.shear_share(kick_time)),
-                          nlocal, newton_pair);
+                          nlocal, newton_pair, c.roll_film);
     tangential = c.tangential;
     loop.torque[i][0] += c.torque_i.x, loop.torque[i][1] += c.torque_i.y, loop.torque[i][2] += c.torque_i.z;
     if (newton_pair || j < nlocal)

@@ -47,7 +47,7 @@ void PairLubricatedSpringDashpot::init_style()
   warn_hybrid_instances();
   find_integrators();
   choose_loops();
-  init_film_budget(needs.shear_film);
+  init_film_budget(needs.shear_film, needs.roll_film);
   // Immovable atoms and rigid bodies, found anew at every run (fixes and groups may change).
   contact_mass.init(STYLE, true);
   inverse_mass_on = contact_mass.active();
@@ -87,10 +87,12 @@ PairLubricatedSpringDashpot::TypePairNeeds PairLubricatedSpringDashpot::settle_c
       any_tangential = any_tangential || c.tangential();
       needs.friction = needs.friction || c.friction > 0.0;
       needs.shear_film = needs.shear_film || (c.wet() && c.shear_film());
+      needs.roll_film = needs.roll_film || (c.wet() && c.roll_film());
     }
+  any_roll_film = needs.roll_film;
   if (any_tangential && !(atom->omega_flag && atom->torque_flag))
     error->all(FLERR,
-               "{} with friction, rolling or shearfilm requires per-atom omega and torque "
+               "{} with friction, rolling, shearfilm or rollfilm requires per-atom omega and torque "
                "(atom_style sphere)",
                STYLE);
   return needs;
@@ -151,7 +153,8 @@ void PairLubricatedSpringDashpot::choose_loops()
   vector_loops = vector_enabled && !any_tangential && !midpoint;
   // With friction or rolling, the pairs apart over a step feel the normal and shear films
   // alone: they take a vectorised film loop too; and the sustained frictional contacts theirs.
-  film_loops = vector_enabled && any_tangential && !midpoint;
+  // The rolling film is in the scalar loop only.
+  film_loops = vector_enabled && any_tangential && !midpoint && !any_roll_film;
   uniform_models = true;
   double first[lub::Coefficients::packed_size], other[lub::Coefficients::packed_size];
   coeffs[index(1, 1)].pack(first);
@@ -178,8 +181,8 @@ void PairLubricatedSpringDashpot::choose_loops()
 }
 
 // The many-body film budget covers the films of these pairs and of the wet walls; the shear
-// films share it.
-void PairLubricatedSpringDashpot::init_film_budget(bool any_shear_film)
+// and rolling films share it.
+void PairLubricatedSpringDashpot::init_film_budget(bool any_shear_film, bool any_roll_film_pair)
 {
   // The coupled solve takes the velocities of velocity Verlet's step (fix nve/sphere), not the
   // midpoint integrator's extrapolated ones.
@@ -188,7 +191,7 @@ void PairLubricatedSpringDashpot::init_film_budget(bool any_shear_film)
                "{}: limit implicit is not available with fix nve/sphere/midpoint (use fix nve/sphere, "
                "or limit atom)",
                STYLE);
-  budget.init(limit_per_atom, any_wet, any_shear_film, film_solve);
+  budget.init(limit_per_atom, any_wet, any_shear_film, film_solve, any_roll_film_pair);
   if ((any_wet || budget.wet_participants()) && comm->me == 0)
     utils::logmesg(lmp, "{}: {}\n", STYLE,
                    !budget.kept()  ? "each film within its own cap only (limit pair)"

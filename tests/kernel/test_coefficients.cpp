@@ -382,10 +382,10 @@ TEST(Coefficients, RestartOrderIsTheTableOrder)
 {
   Coefficients c;
   ASSERT_EQ(parse("0.7 tcontact 2e-4 viscosity 3e-3 activation 0.2 saturation 2e-3 release -0.02 integration "
-                  "sampled friction 0.3 tangential 0.4 rolling 0.05 shearfilm no",
+                  "sampled friction 0.3 tangential 0.4 rolling 0.05 shearfilm no rollfilm yes",
                   c),
             "");
-  const double expected[] = {0.7, 8.0, 2e-4, 3e-3, 0.2, 0.0, 2e-3, -0.02, 0.0, 0.3, 0.4, 0.05, 0.0, 0.0};
+  const double expected[] = {0.7, 8.0, 2e-4, 3e-3, 0.2, 0.0, 2e-3, -0.02, 0.0, 0.3, 0.4, 0.05, 0.0, 0.0, 1.0};
   ASSERT_EQ(sizeof expected / sizeof expected[0], static_cast<size_t>(Coefficients::packed_size));
   double buf[Coefficients::packed_size];
   c.pack(buf);
@@ -393,5 +393,5 @@ TEST(Coefficients, RestartOrderIsTheTableOrder)
     EXPECT_EQ(buf[k], expected[k]) << coefficient_keywords[k].name;
   EXPECT_EQ(parse("0.9 viscosity 1e-3 activation 0.1 size 3", c),
             "unknown keyword 'size' (expected ncontact, tcontact, viscosity, activation, grid, saturation, release, "
-            "integration, friction, tangential, rolling, shearfilm or legendre)");
+            "integration, friction, tangential, rolling, shearfilm, legendre or rollfilm)");
 }

@@ -2,7 +2,8 @@
 // logarithms of two spheres (radii a and lambda a), as the literature tabulates them
 // (normalisations: A_11 by 6 pi mu a, B_11 by 4 pi mu a^2, C_11 by 8 pi mu a^3, C_12 by
 // pi mu (a + lambda a)^3; sphere 2 by lambda -> 1 / lambda and a -> lambda a).
-#include "lubricated/tangential.h"
+#include "lubricated/check_setup.h"
+#include "lubricated/film_link.h"
 
 #include <gtest/gtest.h>
 
@@ -75,4 +76,72 @@ TEST(RollFilm, ActsWhereTheShearFilmActs)
   EXPECT_DOUBLE_EQ(roll_film_coefficient(1.0, 5e-4, 0.1, 1e-3, 1e-4, 1.0),    // saturated
                    roll_film_coefficient(1.0, 1e-3, 0.1, 1e-3, 1e-4, 1.0));
   EXPECT_EQ(roll_film_coefficient(1.0, 0.1, 0.1, 1e-3, 1e-4, 1.0), 0.0);    // continuous at eps_al
+}
+
+// The whole contact (contact.h) of a wet pair at rest with `rollfilm yes`: the rolling film's
+// couple on i and j (no force), exactly the step-exact damper of the relative spin across n.
+TEST(RollFilm, ContactAppliesTheStepExactCouple)
+{
+  Coefficients c;
+  c.e_dry = 0.5, c.n_contact = 8, c.viscosity = 0.01, c.eps_activation = 0.1, c.shearfilm = 0, c.rollfilm = 1;
+  ASSERT_TRUE(c.tangential());
+  const double dt = 1e-6, r_i = 1e-3, r_j = 1.4e-3, rho = 1000.0;
+  const ContactModel model = make_contact_model(c, Partner::particle, dt);
+  ContactPoint p;
+  p.film = film_radius_pair(r_i, r_j);
+  p.gap = 0.01 * p.film.value;
+  p.n = {1.0, 0.0, 0.0};
+  p.omega_i = {3.0, 2.0, 0.5}, p.omega_j = {-1.0, 0.0, 1.0};
+  p.radius_i = r_i, p.radius_j = r_j, p.reduced_radius = r_i * r_j / (r_i + r_j);
+  p.mass_i = rho * 4.0 / 3.0 * pi * r_i * r_i * r_i, p.mass_j = rho * 4.0 / 3.0 * pi * r_j * r_j * r_j;
+  p.reduced_mass = p.mass_i * p.mass_j / (p.mass_i + p.mass_j);
+  HistorySlot slot;
+  const ContactForces f = contact_forces<true>(model, p, slot);
+  const double gamma = roll_film_coefficient(c.viscosity, 0.01, 0.1, c.eps_saturation, c.eps_release, p.reduced_radius);
+  const double inertia = 1.0 / (1.0 / sphere_inertia(p.mass_i, r_i) + 1.0 / sphere_inertia(p.mass_j, r_j));
+  const double damping = -std::expm1(-gamma * dt / inertia) * inertia / dt;
+  EXPECT_NEAR(f.torque_i.x, 0.0, 0.0);
+  EXPECT_NEAR(f.torque_i.y, -damping * 2.0, 1e-12 * damping);
+  EXPECT_NEAR(f.torque_i.z, -damping * -0.5, 1e-12 * damping);
+  EXPECT_DOUBLE_EQ(f.torque_j.y, -f.torque_i.y);
+  EXPECT_DOUBLE_EQ(f.torque_j.z, -f.torque_i.z);
+  EXPECT_DOUBLE_EQ(f.roll_film.y, f.torque_i.y);
+  EXPECT_EQ(dot(f.tangential, f.tangential), 0.0);
+  // its share of the budget: the fraction of the relative spin one step removes
+  EXPECT_NEAR(f.shear_share(dt), -std::expm1(-gamma * dt / inertia), 1e-14);
+}
+
+// The coupled solve's link carries the rolling film's gamma: a couple -gamma w on i, +gamma w on j,
+// dissipating gamma |w|^2.
+TEST(RollFilm, FilmLinkCarriesTheCouple)
+{
+  Coefficients c;
+  c.e_dry = 0.5, c.n_contact = 8, c.viscosity = 0.01, c.eps_activation = 0.1, c.shearfilm = 0, c.rollfilm = 1;
+  const ContactModel model = make_contact_model(c, Partner::particle, 1e-6);
+  const double r_i = 1e-3, r_j = 1.4e-3, eps = 0.01;
+  const double r = r_i + r_j + eps * film_radius_pair(r_i, r_j).value;
+  const FilmLink link = pair_film_link(model, 0, 1, {0.0, 0.0, 1.0}, r, r_i, r_j);
+  const double gamma =
+      roll_film_coefficient(c.viscosity, eps, 0.1, c.eps_saturation, c.eps_release, r_i * r_j / (r_i + r_j));
+  EXPECT_NEAR(link.roll_damping, gamma, 1e-12 * gamma);    // eps from the centre distance
+  EXPECT_EQ(link.shear_damping, 0.0);
+  const double radius[2] = {r_i, r_j}, w[12] = {0, 0, 0, 1.0, -2.0, 4.0, 0, 0, 0, 0.5, 1.0, -3.0};
+  FilmAtoms atoms;
+  atoms.owned = atoms.total = 2, atoms.radius = radius;
+  const FilmLinkForce f = film_link_force(link, atoms, w, true);
+  EXPECT_NEAR(f.torque_i.x, -link.roll_damping * 0.5, 1e-15);
+  EXPECT_NEAR(f.torque_i.y, -link.roll_damping * -3.0, 1e-15);
+  EXPECT_EQ(f.torque_i.z, 0.0);
+  EXPECT_DOUBLE_EQ(f.torque_j.x, -f.torque_i.x);
+  EXPECT_DOUBLE_EQ(f.torque_j.y, -f.torque_i.y);
+  const double power = dot(f.torque_i, {1.0, -2.0, 4.0}) + dot(f.torque_j, {0.5, 1.0, -3.0});
+  EXPECT_NEAR(power, -link.roll_damping * (0.25 + 9.0), 1e-15);
+}
+
+TEST(RollFilm, WallsRefuseIt)
+{
+  Coefficients c;
+  c.e_dry = 0.5, c.n_contact = 8, c.viscosity = 0.01, c.eps_activation = 0.1, c.rollfilm = 1;
+  EXPECT_NE(check_setup(c, Partner::wall, 1e-6).error.find("rollfilm is for pairs of spheres"), std::string::npos);
+  EXPECT_EQ(check_setup(c, Partner::particle, 1e-6).error, "");
 }
