@@ -3,7 +3,7 @@ fluid's torque on the spins, default saturation), over the time step: eta_s, the
 pressure P and mu at N_c 8, 16 and 32 from one packing per solid fraction, and how much each
 changes when dt is halved once and twice from N_c 8 (issue 45 asks for less than 5 %).
 
-    .venv/bin/python bench/suspension_step.py [--out build/suspension_step] [--n 300]
+    .venv/bin/python bench/suspension_step.py [--out build/suspension_step] [--n 300] [--rollfilm]
         [--strain 2] [--average 1.5] [--jobs 2] [--reuse]
 
 Cases: solid fractions 0.50, 0.54, 0.56 with friction 0.5 and 0. Each packing is compressed
@@ -56,7 +56,8 @@ def shear(out, phi, mu_c, nc, args):
         steps_per_strain = nc / args.gtc
         variables = {"n": args.n, "phi": phi, "mu_c": mu_c, "nc": nc, "gtc": args.gtc, "strain": args.strain,
                      "average": args.average, "packing": 2, "packing_file": packing(out, phi, args),
-                     "series": max(1, round(steps_per_strain / SAMPLES_PER_STRAIN)), "thermo": 1000000}
+                     "series": max(1, round(steps_per_strain / SAMPLES_PER_STRAIN)), "thermo": 1000000,
+                     "rollfilm": "yes" if args.rollfilm else "no"}
         lammps_run.run(SCRIPT.read_text(), work, variables, name="in.suspension_shear", timeout=6 * 3600)
     seconds = bench_common.parse_log(log_path.read_text())["seconds"]
     return np.loadtxt(work / "suspension_series.txt", comments="#")[:, 1:4], seconds
@@ -85,7 +86,8 @@ def change(a, b, key):
 
 def table(rows, args):
     lines = ["# The sheared suspension over the time step (bench/suspension_step.py)", "",
-             f"examples/suspension_shear as a user runs it (limit implicit, rotation yes, saturation 1e-3), "
+             f"examples/suspension_shear as a user runs it (limit implicit, rotation yes, saturation 1e-3"
+             f"{', rollfilm yes' if args.rollfilm else ''}), "
              f"{args.n} spheres, St 1e-3, gdot t_c {args.gtc:g}, one packing per phi, strain {args.strain:g} averaged over "
              f"its last {args.average:g} in blocks of {BLOCK:g}; one rank. Changes from N_c 8, with the combined "
              "statistical error.", "",
@@ -128,6 +130,7 @@ def main():
     parser.add_argument("--cases", nargs="+", default=None, help="phi:mu_c pairs (default: the six)")
     parser.add_argument("--section", default="suspension-step", help="section of --results")
     parser.add_argument("--csv", default=str(CSV), help="the table as CSV ('none' to skip)")
+    parser.add_argument("--rollfilm", action="store_true", help="the films' rolling term on (pair_coeff rollfilm yes)")
     args = parser.parse_args()
     cases = [tuple(float(v) for v in c.split(":")) for c in args.cases] if args.cases else CASES
     out = pathlib.Path(args.out)
