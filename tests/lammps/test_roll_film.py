@@ -132,6 +132,19 @@ def test_walls_refuse_the_rolling_film(lmp):
     assert "ERROR" in lmp.log and "rollfilm is for pairs of spheres" in lmp.log
 
 
+def spinning_cluster(limit, newton="on"):
+    """The cluster scene of dense_scenes with its centre spinning, rolling films only."""
+    script = dense_scenes.cluster(1000.0, 1e-6, steps=100, limit=limit, extra="shearfilm no rollfilm yes")
+    line = next(w for w in script.splitlines() if w.startswith("velocity centre set"))
+    script = script.replace(line, "set group centre omega 30 20 10").replace("newton on", f"newton {newton}")
+    return script.replace("print \"RESULT final", "compute om all property/atom omegax omegay omegaz\n"
+                          "compute spin all reduce sum c_om[1] c_om[2] c_om[3]\n"
+                          "compute mine centre reduce sum c_om[1] c_om[2] c_om[3]\n"
+                          "run 0\nprint \"RESULT spin $(c_spin[1]:%.17g) $(c_spin[2]:%.17g) $(c_spin[3]:%.17g)\"\n"
+                          "print \"RESULT centre $(c_mine[1]:%.17g) $(c_mine[2]:%.17g) $(c_mine[3]:%.17g)\"\n"
+                          "print \"RESULT final")
+
+
 @pytest.mark.parametrize("limit", ["atom", "implicit"])
 def test_a_spinning_sphere_among_twelve_keeps_the_energy_bound(lmp, limit):
     """One sphere spinning among its 12 fcc neighbours at rest (gaps 2e-3 R, mu_f = 1000 Pa s, dt
@@ -140,16 +153,7 @@ def test_a_spinning_sphere_among_twelve_keeps_the_energy_bound(lmp, limit):
     the centre's spin several times over. Within the budget (its loads count the rolling films)
     or solved together, the energy never rises, the angular momentum is kept and the spin is
     shared out."""
-    script = dense_scenes.cluster(1000.0, 1e-6, steps=100, limit=limit, extra="shearfilm no rollfilm yes")
-    line = next(w for w in script.splitlines() if w.startswith("velocity centre set"))
-    script = script.replace(line, "set group centre omega 30 20 10")
-    script = script.replace("print \"RESULT final", "compute om all property/atom omegax omegay omegaz\n"
-                            "compute spin all reduce sum c_om[1] c_om[2] c_om[3]\n"
-                            "compute mine centre reduce sum c_om[1] c_om[2] c_om[3]\n"
-                            "run 0\nprint \"RESULT spin $(c_spin[1]:%.17g) $(c_spin[2]:%.17g) $(c_spin[3]:%.17g)\"\n"
-                            "print \"RESULT centre $(c_mine[1]:%.17g) $(c_mine[2]:%.17g) $(c_mine[3]:%.17g)\"\n"
-                            "print \"RESULT final")
-    r = lmp(script)
+    r = lmp(spinning_cluster(limit))
     rows = energies(lmp.log)
     energy = [e for _, e in rows]
     assert len(energy) >= 10 and energy[0] > 0.0
@@ -160,6 +164,16 @@ def test_a_spinning_sphere_among_twelve_keeps_the_energy_bound(lmp, limit):
     common = [w / 13.0 for w in (30.0, 20.0, 10.0)]
     start = math.dist((30.0, 20.0, 10.0), common)
     assert math.dist(r["centre"], common) < 0.1 * start
+
+
+@pytest.mark.parametrize("limit", ["atom", "implicit"])
+def test_one_and_two_ranks_and_newton_off_agree(lmp, limit):
+    """The spinning cluster on 2 ranks with newton off (each film once, its couple on a ghost's
+    owner by the reverse communication of the budget and the solve) as on 1 rank with newton on,
+    to the solver's tolerance."""
+    one = lmp(spinning_cluster(limit))["centre"]
+    two = lmp(spinning_cluster(limit, newton="off"), nprocs=2, env=dense_scenes.OVERSUBSCRIBED)["centre"]
+    assert two == pytest.approx(one, rel=1e-10, abs=1e-10 * 30.0)
 
 
 RESTART_PAIRS = [
