@@ -104,7 +104,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"0.9 viscosity 1e-3 activation 0.1 legendre 35 integration sampled",
                                "legendre needs integration exact"},
                       BadInput{"0.9 viscosity 1e-3 activation 0.1 legendre 35 release -0.01",
-                               "release = -0.01 is out of range with legendre"}));
+                               "release = -0.01 is out of range with legendre"},
+                      BadInput{"0.9 rollfilm maybe", "rollfilm must be yes or no, got 'maybe'"},
+                      BadInput{"0.9 rollfilm 1", "rollfilm must be yes or no, got '1'"},
+                      BadInput{"0.9 rollfilm", "missing value for keyword rollfilm"}));
 
 // Finite but absurd values (issue 17): each stops with its name, its value and the range,
 // instead of a NaN or an infinity in the model's constants (k = 0 at N_c = 1e160, 1/eps_1 = inf
@@ -353,6 +356,7 @@ static std::string random_line(std::mt19937 &rng)
   if (chance(0.4)) pairs.push_back("tangential " + text(unit(rng)));
   if (chance(0.4)) pairs.push_back("rolling " + text(0.1 * unit(rng)));
   if (chance(0.4)) pairs.push_back(chance(0.5) ? "shearfilm yes" : "shearfilm no");
+  if (chance(0.3)) pairs.push_back(chance(0.5) ? "rollfilm yes" : "rollfilm no");
   std::shuffle(pairs.begin(), pairs.end(), rng);
   std::string line = text(0.01 + 0.99 * unit(rng));
   for (const std::string &pair : pairs)

@@ -92,6 +92,17 @@ def test_relative_spin_decays_at_the_rolling_films_rate(lmp, nprocs):
     assert r["v"] == [0.0, 0.0, 0.0]    # no force: the spheres stay at rest
 
 
+@pytest.mark.parametrize("split", ["run 20\nrun 20", "run 20\nrun 0\nrun 0\nrun 20"])
+def test_split_runs_and_run_0_continue_as_one_run(lmp, split):
+    """The run cut in two, with or without `run 0` between: each set-up continues the last step
+    (the spins it kept), so the relative spin decays as in one run, to round-off."""
+    script, _ = pair_scene()
+    whole = lmp(script)
+    parts = lmp(script.replace(f"run {STEPS}\n", split + "\n"))
+    for key in ("w1", "w2"):
+        assert parts[key] == pytest.approx(whole[key], rel=1e-12, abs=1e-14)
+
+
 def test_without_the_keyword_the_spins_are_untouched(lmp):
     script, _ = pair_scene(roll="")
     r = lmp(script)
