@@ -153,13 +153,15 @@ bool FilmBudget::films_can_exceed_budget(const NeighList *list, const TypeTables
     // The contact's share is the larger of its normal and shear films' (lubricated/film_budget.h).
     const double m_e = lub::reduced_mass(rmass[i], rmass[j]);
     const double reduced_radius = radius[i] * radius[j] / (radius[i] + radius[j]);
-    const double rolling_inertia =
-        1.0 / (1.0 / lub::sphere_inertia(rmass[i], radius[i]) + 1.0 / lub::sphere_inertia(rmass[j], radius[j]));
-    return std::max(
-        lub::film_share_bound(film, radius_ij.value, m_e, dt),
-        lub::shear_film_share_bound(model.tangential, film, radius_ij.value, reduced_radius,
-                                    lub::tangential_mass_ratio * m_e, dt) +
-            lub::roll_film_share_bound(model.tangential, film, radius_ij.value, reduced_radius, rolling_inertia, dt));
+    double tangential = lub::shear_film_share_bound(model.tangential, film, radius_ij.value, reduced_radius,
+                                                    lub::tangential_mass_ratio * m_e, dt);
+    if (model.tangential.roll_film_active()) {    // with the shear film's: both act on the spins
+      const double inertia_i = lub::sphere_inertia(rmass[i], radius[i]),
+                   inertia_j = lub::sphere_inertia(rmass[j], radius[j]);
+      tangential += lub::roll_film_share_bound(model.tangential, film, radius_ij.value, reduced_radius,
+                                               inertia_i * inertia_j / (inertia_i + inertia_j), dt);
+    }
+    return std::max(lub::film_share_bound(film, radius_ij.value, m_e, dt), tangential);
   });
 }
 

@@ -153,10 +153,8 @@ inline double roll_film_share_bound(const TangentialModel &m, const Lubrication 
                                     double reduced_radius, double rolling_inertia, double dt)
 {
   if (!m.roll_film_active() || !film.active()) return 0.0;
-  const double eps_al = film.activation_for(film_radius);
-  const double gamma = roll_film_coefficient(m.roll_mu, film.eps_saturation, eps_al, film.eps_saturation,
-                                             std::min(film.eps_release, 0.5 * film.eps_saturation), reduced_radius);
-  return -std::expm1(-gamma * dt / rolling_inertia);
+  const double log_range = std::max(0.0, std::log(film.activation_for(film_radius) / film.eps_saturation));
+  return -std::expm1(-roll_film_gamma(m.roll_mu, reduced_radius, log_range) * dt / rolling_inertia);
 }
 
 // The shear film's share a_t = |F| t_kick / (m_t |s|) from the squared lengths of its force and
@@ -185,9 +183,8 @@ inline double pair_film_share_ceiling(const TangentialModel &shear, const Lubric
   if (!shear.film_active() && !shear.roll_film_active()) return normal;
   const double log_range = std::max(0.0, std::log(film.activation_for(smallest) / film.eps_saturation));
   const double rate = shear.two_pi_mu * (0.5 * r_max) * log_range * dt / (tangential_mass_ratio * 0.5 * m_min);
-  // Rolling film: gamma <= (24/5) pi mu_f (r_max / 2)^3 ln(eps_al / eps_1), 1/I_e <= 2 / (0.4 m_min r_min^2).
-  const double half = 0.5 * r_max;
-  const double roll_rate = 24.0 / 5.0 * pi * shear.roll_mu * half * half * half * log_range * dt * 2.0 /
+  // Rolling film: R_e <= r_max / 2 and 1/I_e <= 2 / (0.4 m_min r_min^2).
+  const double roll_rate = roll_film_gamma(shear.roll_mu, 0.5 * r_max, log_range) * dt * 2.0 /
                            (solid_sphere_inertia_ratio * m_min * r_min * r_min);
   return std::max(normal, -std::expm1(-rate) - std::expm1(-roll_rate));
 }

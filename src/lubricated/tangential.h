@@ -226,6 +226,12 @@ __attribute__((always_inline)) inline double shear_film_damping(const Tangential
   return factor * tangential_mass / m.dt;
 }
 
+// Whether a normalised gap eps lies in the shear film: between eps_release and eps_al.
+__attribute__((always_inline)) inline bool in_shear_film(double eps, double eps_al, double eps_release)
+{
+  return (eps < eps_al) & (eps > eps_release);
+}
+
 // Rolling film (doc/model.rst, Shear film: the rolling mode): Jeffrey & Onishi's (J. Fluid Mech.
 // 139, 261, 1984) leading logarithms of Y^A, Y^B and Y^C of two spheres of any size ratio are a
 // dissipation alpha |s|^2 + 2 beta s.(w x n) + gamma |w|^2 in the slip s and the relative spin
@@ -234,12 +240,17 @@ __attribute__((always_inline)) inline double shear_film_damping(const Tangential
 // ln(1/eps). Coefficient [torque / angular velocity] at normalised gap eps, activated, saturated
 // and released like the shear film (`rollfilm yes`; pairs of spheres only: at a wall the shear
 // film is not the alpha of this split).
+//
+// roll_film_gamma: gamma for the logarithm log_ratio = ln(eps_al / max(eps, eps_1)) (also for bounds).
+inline double roll_film_gamma(double viscosity, double reduced_radius, double log_ratio)
+{
+  return 24.0 / 5.0 * pi * viscosity * reduced_radius * reduced_radius * reduced_radius * log_ratio;
+}
 inline double roll_film_coefficient(double viscosity, double eps, double eps_al, double eps_saturation,
                                     double eps_release, double reduced_radius)
 {
-  if (!(eps < eps_al && eps > eps_release)) return 0.0;
-  const double cube = reduced_radius * reduced_radius * reduced_radius;
-  return 24.0 / 5.0 * pi * viscosity * cube * std::log(eps_al / std::max(eps, eps_saturation));
+  if (!in_shear_film(eps, eps_al, eps_release)) return 0.0;
+  return roll_film_gamma(viscosity, reduced_radius, std::log(eps_al / std::max(eps, eps_saturation)));
 }
 
 // The rolling film's torque on i over a step (on j the opposite) for the relative spin
@@ -252,16 +263,9 @@ inline Vec3 roll_film_torque(const TangentialModel &m, const Vec3 &omega_rel, co
 {
   share_rate = 0.0;
   if (!(gamma > 0.0 && inertia > 0.0)) return {};
-  const double rate = gamma * m.dt / inertia;
-  const double factor = rate < 1e-6 ? rate * (1.0 - 0.5 * rate) : -std::expm1(-rate);
+  const double factor = -std::expm1(-gamma * m.dt / inertia);
   share_rate = factor / m.dt;
   return scaled(tangential_part(omega_rel, n), -factor * inertia / m.dt);
-}
-
-// Whether a normalised gap eps lies in the shear film: between eps_release and eps_al.
-__attribute__((always_inline)) inline bool in_shear_film(double eps, double eps_al, double eps_release)
-{
-  return (eps < eps_al) & (eps > eps_release);
 }
 
 inline Vec3 shear_film_force(const TangentialModel &m, const Vec3 &s, double eps, double eps_al, double eps_saturation,

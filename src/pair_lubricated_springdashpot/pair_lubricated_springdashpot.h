@@ -134,7 +134,7 @@ class PairLubricatedSpringDashpot : public Pair, public FilmBudgetOwner, private
   void warn_hybrid_instances();
   void find_integrators();
   void choose_loops();
-  void init_film_budget(bool any_shear_film, bool any_roll_film);
+  void init_film_budget(bool any_shear_film);
   void check_grid_spacing();
   void find_largest_radii();
 

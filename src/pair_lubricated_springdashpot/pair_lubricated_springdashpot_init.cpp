@@ -47,7 +47,7 @@ void PairLubricatedSpringDashpot::init_style()
   warn_hybrid_instances();
   find_integrators();
   choose_loops();
-  init_film_budget(needs.shear_film, needs.roll_film);
+  init_film_budget(needs.shear_film);
   // Immovable atoms and rigid bodies, found anew at every run (fixes and groups may change).
   contact_mass.init(STYLE, true);
   inverse_mass_on = contact_mass.active();
@@ -182,7 +182,7 @@ void PairLubricatedSpringDashpot::choose_loops()
 
 // The many-body film budget covers the films of these pairs and of the wet walls; the shear
 // and rolling films share it.
-void PairLubricatedSpringDashpot::init_film_budget(bool any_shear_film, bool any_roll_film_pair)
+void PairLubricatedSpringDashpot::init_film_budget(bool any_shear_film)
 {
   // The coupled solve takes the velocities of velocity Verlet's step (fix nve/sphere), not the
   // midpoint integrator's extrapolated ones.
@@ -191,7 +191,7 @@ void PairLubricatedSpringDashpot::init_film_budget(bool any_shear_film, bool any
                "{}: limit implicit is not available with fix nve/sphere/midpoint (use fix nve/sphere, "
                "or limit atom)",
                STYLE);
-  budget.init(limit_per_atom, any_wet, any_shear_film, film_solve, any_roll_film_pair);
+  budget.init(limit_per_atom, any_wet, any_shear_film, film_solve, any_roll_film);
   if ((any_wet || budget.wet_participants()) && comm->me == 0)
     utils::logmesg(lmp, "{}: {}\n", STYLE,
                    !budget.kept()  ? "each film within its own cap only (limit pair)"

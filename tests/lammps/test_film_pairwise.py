@@ -11,20 +11,15 @@ import math
 
 import pytest
 
+import dense_scenes
+
 A = 1.0e-4
 RATIO = 1.4
 GDOT = 1.0
 ETA = 1.0e-2
 RHO = 1000.0
 
-SCRIPT = """plugin load ${{plugin}}
-units si
-atom_style sphere
-atom_modify map array
-boundary p p p
-comm_modify vel yes
-newton on
-region box prism 0 {box} 0 {box} 0 {box} 0 0 0 units box
+SCRIPT = """region box prism 0 {box} 0 {box} 0 {box} 0 0 0 units box
 create_box 2 box
 create_atoms 1 single {x1} {y1} {z} units box
 create_atoms 2 single {x2} {y2} {z} units box
@@ -62,10 +57,10 @@ def pair_script(limit):
     box = 20.0 * A
     c = 0.5 * box
     tc = 1.0e-3 / GDOT
-    return SCRIPT.format(box=box, x1=c + 0.5 * dist * n[0], y1=c + 0.5 * dist * n[1],
-                         x2=c - 0.5 * dist * n[0], y2=c - 0.5 * dist * n[1], z=c, d1=2 * r1, d2=2 * r2,
-                         rho=RHO, vtop=GDOT * box, spin=-0.5 * GDOT, skin=0.5 * A, dt=tc / 8, limit=limit,
-                         tc=tc, eta=ETA, gdot=GDOT, nx=n[0], ny=n[1], steps=40)
+    return dense_scenes.HEADER + SCRIPT.format(
+        box=box, x1=c + 0.5 * dist * n[0], y1=c + 0.5 * dist * n[1], x2=c - 0.5 * dist * n[0],
+        y2=c - 0.5 * dist * n[1], z=c, d1=2 * r1, d2=2 * r2, rho=RHO, vtop=GDOT * box, spin=-0.5 * GDOT,
+        skin=0.5 * A, dt=tc / 8, limit=limit, tc=tc, eta=ETA, gdot=GDOT, nx=n[0], ny=n[1], steps=40)
 
 
 @pytest.mark.parametrize("limit,nprocs", [("atom", 1), ("implicit", 1), ("implicit", 2)])

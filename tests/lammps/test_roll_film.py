@@ -25,14 +25,7 @@ STEPS = 40
 SPIN_1 = (3.0, 2.0, 0.5)
 SPIN_2 = (-1.0, 0.0, 1.0)
 
-SCRIPT = """plugin load ${{plugin}}
-units si
-atom_style sphere
-atom_modify map array
-boundary f f f
-comm_modify vel yes
-newton on
-region box block 0 {box} 0 {box} 0 {box} units box
+SCRIPT = """region box block 0 {box} 0 {box} 0 {box} units box
 create_box 2 box
 create_atoms 1 single {x1} {c} {c} units box
 create_atoms 2 single {x2} {c} {c} units box
@@ -67,9 +60,10 @@ def pair_scene(roll="rollfilm yes"):
     dt = X / (gamma * (1.0 / inertia[0] + 1.0 / inertia[1]))
     dist, box = r1 + r2 + EPS * film_radius, 20 * A
     c = 0.5 * box
-    script = SCRIPT.format(box=box, c=c, x1=c + 0.5 * dist, x2=c - 0.5 * dist, d1=2 * r1, d2=2 * r2, rho=RHO,
-                           w1=" ".join(map(str, SPIN_1)), w2=" ".join(map(str, SPIN_2)), skin=0.5 * A, dt=dt,
-                           tc=20 * dt, eta=ETA, roll=roll, steps=STEPS)
+    header = dense_scenes.HEADER.replace("boundary p p p", "boundary f f f")
+    script = header + SCRIPT.format(box=box, c=c, x1=c + 0.5 * dist, x2=c - 0.5 * dist, d1=2 * r1, d2=2 * r2,
+                                    rho=RHO, w1=" ".join(map(str, SPIN_1)), w2=" ".join(map(str, SPIN_2)),
+                                    skin=0.5 * A, dt=dt, tc=20 * dt, eta=ETA, roll=roll, steps=STEPS)
     return script, inertia
 
 
