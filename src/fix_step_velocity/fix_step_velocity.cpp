@@ -6,6 +6,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
@@ -195,13 +196,27 @@ int FixStepVelocity::unpack_exchange(int nlocal, double *buf)
   return VALUES;
 }
 
-int FixStepVelocity::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+// A ghost that is a periodic image of its owner moves with the owner's velocity, plus, in a box
+// that fix deform changes with `remap v`, the box's velocity over the image's offset (as LAMMPS
+// communicates atom->v; without it the films and contacts across the box's boundary would see
+// the shear rate times the box as a relative velocity at a continued set-up).
+int FixStepVelocity::pack_forward_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
 {
+  double shift[3] = {0.0, 0.0, 0.0};
+  const bool remap = pbc_flag && domain->deform_vremap;
+  if (remap) {
+    const double *rate = domain->h_rate;    // xx yy zz yz xz xy
+    shift[0] = pbc[0] * rate[0] + pbc[5] * rate[5] + pbc[4] * rate[4];
+    shift[1] = pbc[1] * rate[1] + pbc[3] * rate[3];
+    shift[2] = pbc[2] * rate[2];
+  }
+  const int *mask = atom->mask;
   int m = 0;
   for (int k = 0; k < n; k++) {
     const int i = list[k];
+    const bool shifted = remap && (mask[i] & domain->deform_groupbit);
     for (int d = 0; d < 3; d++)
-      buf[m++] = vhalf[i][d];
+      buf[m++] = shifted ? vhalf[i][d] + shift[d] : vhalf[i][d];
     for (int d = 0; d < 3; d++)
       buf[m++] = whalf[i][d];
   }

@@ -148,6 +148,29 @@ def test_one_two_and_four_ranks_agree_on_a_sheared_suspension(lmp):
             assert abs(other[:, columns] - state[:, columns]).max() <= bound * abs(state[:, columns]).max()
 
 
+def test_split_run_in_a_sheared_box_goes_on_as_one(lmp):
+    """The sheared suspension of suspension_scene.py (fix deform xy erate ... remap v), 16 steps
+    at tolerance 1e-10 in one run and as run 8 + run 8. The second run's set-up evaluates as the
+    last step did (fix_step_velocity.h), ghosts included: a ghost that is an image across the
+    sheared boundary moves with its owner's velocity plus gdot L_y, as LAMMPS communicates it.
+    Without that shift the set-up's films across the boundary saw a relative velocity of
+    gdot L_y and the split run's velocities parted from the single run's by 2.6e-3 of the
+    largest (forces 0.14). What remains is the box's last move, which fix deform makes after the
+    forces of a step and the set-up sees (images across the boundary displaced by gdot dt L_y):
+    1.3e-5 of the velocities, 3e-4 of the forces. Bounds: 1e-4 and 3e-3."""
+    lmp(suspension_scene.packing_script(), name="in.packing", **suspension_scene.PACKING)
+    script = suspension_scene.shear(str(lmp.dir / "packing.data"), steps=16, tol=1e-10)
+    states = []
+    for name, text in (("one", script), ("split", script.replace("run 16\n", "run 8\nrun 8\n"))):
+        lmp(text, name=f"in.{name}")
+        assert "WARNING" not in lmp.log
+        states.append(suspension_scene.final_state(lmp.dir))
+    one, split = states
+    assert (one[:, 0] == split[:, 0]).all()
+    assert abs(split[:, 4:7] - one[:, 4:7]).max() <= 1e-4 * abs(one[:, 4:7]).max()
+    assert abs(split[:, 7:10] - one[:, 7:10]).max() <= 3e-3 * abs(one[:, 7:10]).max()
+
+
 def test_iteration_limit_warns_once(lmp):
     """iterations 1 cannot reach the tolerance: one WARNING naming tolerance and iterations."""
     lmp(with_solve_columns(dense_scenes.fcc(1.0, 1e-6, steps=20, limit="implicit iterations 1")))
