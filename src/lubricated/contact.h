@@ -116,6 +116,16 @@ inline double rolling_inertia(const ContactPoint &p)
   return inertia_i * inertia_j / (inertia_i + inertia_j);
 }
 
+// The rolling film of a pair of spheres (tangential.h, roll_film_torque) and its share rate, out
+// of line: the contact of a scene without the film carries none of its arithmetic.
+__attribute__((noinline)) inline Vec3 pair_roll_film(const ContactModel &m, const ContactPoint &p, double &share_rate)
+{
+  const Lubrication &film = m.normal.lubrication;
+  const TangentialModel &tm = m.tangential;
+  const double gamma = roll_film_coefficient(tm.roll_mu, p.gap / p.film.value, film.activation_for(p.film.value),
+                                             film.eps_saturation, film.eps_release, p.reduced_radius);
+  return roll_film_torque(tm, minus(p.omega_i, p.omega_j), p.n, gamma, rolling_inertia(p), share_rate);
+}
 }    // namespace detail
 
 // The whole contact. TANGENTIAL false: the normal interaction alone (no tangential field of p
@@ -169,20 +179,18 @@ contact_forces(const ContactModel &m, const ContactPoint &p, HistorySlot &histor
     else
       f = plus(f, shear);
   }
+  Vec3 roll;
+  if (tm.rolling_active() && p.gap < 0.0)
+    roll = rolling_torque(tm, p.n, wall ? p.omega_i : minus(p.omega_i, p.omega_j), p.reduced_radius,
+                          wall ? sphere_inertia(p.mass_i, p.radius_i) : detail::rolling_inertia(p), normal.contact);
+  // The film's torque added to the rolling resistance only where it acts (the other way round,
+  // every frictional contact of a scene without the film cost more: bench/contact_instructions.py).
   Vec3 roll_film;
   double roll_share_rate = 0.0;
   if (!wall && tm.roll_film_active()) {
-    const Lubrication &film = m.normal.lubrication;
-    const double gamma = roll_film_coefficient(tm.roll_mu, p.gap / p.film.value, film.activation_for(p.film.value),
-                                               film.eps_saturation, film.eps_release, p.reduced_radius);
-    roll_film =
-        roll_film_torque(tm, minus(p.omega_i, p.omega_j), p.n, gamma, detail::rolling_inertia(p), roll_share_rate);
+    roll_film = detail::pair_roll_film(m, p, roll_share_rate);
+    roll = plus(roll, roll_film);
   }
-  Vec3 roll = roll_film;
-  if (tm.rolling_active() && p.gap < 0.0)
-    roll = plus(roll, rolling_torque(tm, p.n, wall ? p.omega_i : minus(p.omega_i, p.omega_j), p.reduced_radius,
-                                     wall ? sphere_inertia(p.mass_i, p.radius_i) : detail::rolling_inertia(p),
-                                     normal.contact));
   const Vec3 nxf = cross(p.n, f);
   const Vec3 torque_i = plus(scaled(nxf, -p.radius_i), roll);
   const Vec3 torque_j = wall ? Vec3{} : minus(scaled(nxf, -p.radius_j), roll);
