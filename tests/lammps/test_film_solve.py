@@ -148,7 +148,8 @@ def test_one_two_and_four_ranks_agree_on_a_sheared_suspension(lmp):
             assert abs(other[:, columns] - state[:, columns]).max() <= bound * abs(state[:, columns]).max()
 
 
-def test_split_run_in_a_sheared_box_goes_on_as_one(lmp):
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_split_run_in_a_sheared_box_goes_on_as_one(lmp, nprocs):
     """The sheared suspension of suspension_scene.py (fix deform xy erate ... remap v), 16 steps
     at tolerance 1e-10 in one run and as run 8 + run 8. The second run's set-up evaluates as the
     last step did (fix_step_velocity.h), ghosts included: a ghost that is an image across the
@@ -157,13 +158,14 @@ def test_split_run_in_a_sheared_box_goes_on_as_one(lmp):
     gdot L_y and the split run's velocities parted from the single run's by 2.6e-3 of the
     largest (forces 0.14). What remains is the box's last move, which fix deform makes after the
     forces of a step and the set-up sees (images across the boundary displaced by gdot dt L_y):
-    1.3e-5 of the velocities, 3e-4 of the forces. Bounds: 1e-4 and 3e-3."""
+    1.3e-5 of the velocities, 3e-4 of the forces. Bounds: 1e-4 and 3e-3. On 2 ranks the images
+    across the boundary are sent by the periodic swaps alone, as on 1."""
     lmp(suspension_scene.packing_script(), name="in.packing", **suspension_scene.PACKING)
     script = suspension_scene.shear(str(lmp.dir / "packing.data"), steps=16, tol=1e-10)
     states = []
     for name, text in (("one", script), ("split", script.replace("run 16\n", "run 8\nrun 8\n"))):
-        lmp(text, name=f"in.{name}")
-        assert "WARNING" not in lmp.log
+        lmp(text, name=f"in.{name}", nprocs=nprocs)
+        assert "WARNING" not in lmp.log and dense_scenes.ranks(lmp.log) == {nprocs}
         states.append(suspension_scene.final_state(lmp.dir))
     one, split = states
     assert (one[:, 0] == split[:, 0]).all()
