@@ -46,3 +46,31 @@ def test_films_raise_the_viscosity(runs):
     dry, atom, implicit = (runs[k]["eta_s"] for k in ("dry films", "atom", "implicit"))
     assert runs["dry films"]["iterations"] == 0.0 and runs["atom"]["iterations"] == 0.0
     assert dry < atom < implicit
+
+
+def test_a_restart_file_continues_the_shear(tmp_path):
+    """-var restart_every writes the shear's state; -var packing 3 goes on from it (strain counted
+    from the file), as bench/suspension_step_paired.py does: at the same N_c the continuation
+    repeats the run's own stresses, contact springs and films included. The solve's tolerance
+    and the box's last move (fix deform moves it after a step's forces; the set-up sees it)
+    bound what the restart may change: 1e-4 of the mean stresses over 0.05 of strain (measured
+    2e-6 and 1e-5). A file written within a run (LAMMPS's restart command: no last kicks, a
+    fresh set-up) parted by 7e-4 in sigma_xy and 3e-3 in P."""
+    import lammps_run
+    import numpy as np
+    script = (ROOT / "examples" / "suspension_shear" / "in.suspension_shear").read_text()
+    steps_per_strain = 8 / TINY["gtc"]    # N_c 8, gdot 1
+    tiny = {**TINY, "strain": 0.1, "average": 0.05, "series": 20}
+    lammps_run.run(script, tmp_path / "base", {**tiny, "restart_every": 200},
+                   name="in.suspension_shear")
+    # restart N writes at the multiples of N: step 3400 is strain 0.05 of the shear
+    restart = tmp_path / "base" / f"suspension.{3000 + round(0.05 * steps_per_strain)}.restart"
+    lammps_run.run(script, tmp_path / "continued", {**tiny, "strain": 0.05, "average": 0.02, "packing": 3,
+                                                    "packing_file": restart}, name="in.suspension_shear")
+    base = np.loadtxt(tmp_path / "base" / "suspension_series.txt", comments="#")
+    continued = np.loadtxt(tmp_path / "continued" / "suspension_series.txt", comments="#")[1:]    # after the set-up
+    later = base[base[:, 1] > 0.05 + 1e-9]
+    assert continued[:, 1] == pytest.approx(later[:, 1] - 0.05, abs=1e-9)    # the strain from the file
+    for column in (2, 3):    # sigma_xy, P
+        scale = np.abs(base[:, column]).mean()
+        assert np.max(np.abs(continued[:, column] - later[:, column])) < 1e-4 * scale
