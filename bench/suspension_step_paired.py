@@ -128,7 +128,7 @@ def transient(segments_by_nc, args, bins=4):
         for lo, hi in zip(edges[:-1], edges[1:]):
             d = [window_means(segments_by_nc[nc][g], lo, hi)[0] - window_means(base[g], lo, hi)[0] for g in base]
             s0 = np.mean([window_means(base[g], lo, hi)[0] for g in base])
-            cells.append(f"{100 * np.mean(d) / s0:+.1f} ± {100 * np.std(d, ddof=1) / np.sqrt(len(d)) / s0:.1f} %"
+            cells.append(f"{100 * np.mean(d) / s0:+.2f} ± {100 * np.std(d, ddof=1) / np.sqrt(len(d)) / s0:.2f} %"
                          f" ({lo:.2f}-{hi:.2f})")
         lines.append(f"- N_c {nc}, eta_s change against the strain since the restart: " + ", ".join(cells))
     return lines
@@ -164,7 +164,7 @@ def table(results, args):
     for (phi, mu_c), (rows, case_notes) in results.items():
         for nc in NCS:
             r = rows[nc]
-            moves = ["" if nc == NCS[0] else f"{100 * r['d_' + k]:+.1f} ± {100 * r['d_' + k + '_err']:.1f} %"
+            moves = ["" if nc == NCS[0] else f"{100 * r['d_' + k]:+.2f} ± {100 * r['d_' + k + '_err']:.2f} %"
                      for k in ("eta", "P", "mu")]
             lines.append(f"| {phi:.2f} | {mu_c:.1f} | {nc} | {r['eta_s']:.4g} | {r['P']:.4g} | {r['mu']:.4g} | "
                          + " | ".join(moves) + f" | {r['seconds']:.0f} |")
