@@ -155,12 +155,9 @@ bool FilmBudget::films_can_exceed_budget(const NeighList *list, const TypeTables
     const double reduced_radius = radius[i] * radius[j] / (radius[i] + radius[j]);
     double tangential = lub::shear_film_share_bound(model.tangential, film, radius_ij.value, reduced_radius,
                                                     lub::tangential_mass_ratio * m_e, dt);
-    if (model.tangential.roll_film_active()) {    // with the shear film's: both act on the spins
-      const double inertia_i = lub::sphere_inertia(rmass[i], radius[i]),
-                   inertia_j = lub::sphere_inertia(rmass[j], radius[j]);
+    if (model.tangential.roll_film_active())    // with the shear film's: both act on the spins
       tangential += lub::roll_film_share_bound(model.tangential, film, radius_ij.value, reduced_radius,
-                                               inertia_i * inertia_j / (inertia_i + inertia_j), dt);
-    }
+                                               lub::rolling_inertia(rmass[i], radius[i], rmass[j], radius[j]), dt);
     return std::max(lub::film_share_bound(film, radius_ij.value, m_e, dt), tangential);
   });
 }

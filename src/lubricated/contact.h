@@ -107,13 +107,10 @@ struct ContactForces {
 
 namespace detail {
 
-// Moment of inertia of the relative rolling, 1/I_e = 1/I_i + 1/I_j over the sides that turn.
+// Moment of inertia of the relative rolling of the contact's spheres (tangential.h).
 inline double rolling_inertia(const ContactPoint &p)
 {
-  const double inertia_i = sphere_inertia(p.mass_i, p.radius_i), inertia_j = sphere_inertia(p.mass_j, p.radius_j);
-  if (inertia_j == 0.0) return inertia_i;
-  if (inertia_i == 0.0) return inertia_j;
-  return inertia_i * inertia_j / (inertia_i + inertia_j);
+  return lubricated::rolling_inertia(p.mass_i, p.radius_i, p.mass_j, p.radius_j);
 }
 
 // The rolling film of a pair of spheres (tangential.h, roll_film_torque) and its share rate, out

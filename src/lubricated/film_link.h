@@ -34,15 +34,13 @@ inline FilmLink pair_film_link(const ContactModel &model, int i, int j, const Ve
   if (!film.active()) return link;
   const FilmRadius radius = film_radius_pair(radius_i, radius_j);
   const double eps = (r - radius_i - radius_j) / radius.value;
+  const double eps_al = film.activation_for(radius.value), reduced_radius = radius_i * radius_j / (radius_i + radius_j);
   link.normal_damping = film.damping(eps, radius.value);
   link.shear_damping =
-      shear_film_coefficient(model.tangential, eps, film.activation_for(radius.value), film.eps_saturation,
-                             film.eps_release, radius_i * radius_j / (radius_i + radius_j));
-  link.roll_damping =
-      model.tangential.roll_film_active()
-          ? roll_film_coefficient(model.tangential.roll_mu, eps, film.activation_for(radius.value), film.eps_saturation,
-                                  film.eps_release, radius_i * radius_j / (radius_i + radius_j))
-          : 0.0;
+      shear_film_coefficient(model.tangential, eps, eps_al, film.eps_saturation, film.eps_release, reduced_radius);
+  if (model.tangential.roll_film_active())
+    link.roll_damping = roll_film_coefficient(model.tangential.roll_mu, eps, eps_al, film.eps_saturation,
+                                              film.eps_release, reduced_radius);
   return link;
 }
 

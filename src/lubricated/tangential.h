@@ -45,6 +45,16 @@ inline double sphere_inertia(double mass, double radius)
   return solid_sphere_inertia_ratio * mass * radius * radius;
 }
 
+// Moment of inertia of the relative rolling of two solid spheres of masses m_i, m_j (0: that
+// side does not turn: a wall, an immovable atom), 1/I_e = 1/I_i + 1/I_j over the sides that turn.
+inline double rolling_inertia(double mass_i, double radius_i, double mass_j, double radius_j)
+{
+  const double inertia_i = sphere_inertia(mass_i, radius_i), inertia_j = sphere_inertia(mass_j, radius_j);
+  if (inertia_j == 0.0) return inertia_i;
+  if (inertia_i == 0.0) return inertia_j;
+  return inertia_i * inertia_j / (inertia_i + inertia_j);
+}
+
 // m_t where a sphere's translation carries more than its own mass (the fluid's added mass,
 // which a turning sphere does not carry): 1/m_t = sum over the sides that move of
 // 1/m_c + R^2/I = 1/m_c + 1/(0.4 m), m_c its contact mass (1/m_c: inverse_c, 0 for a side that
