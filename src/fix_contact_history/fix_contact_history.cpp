@@ -171,8 +171,9 @@ void FixContactHistory::store_from_list()
   pool.resize(total);
   each_touching([&](int i, int j, int jj) {
     const double *v = values(i) + jj * nvalue;
-    add(i, tag[j], v, 1.0);
-    if (j < nlocal || newton) add(j, tag[i], v, -1.0);
+    const tagint mark = marked(touched(i)[jj]);
+    add(i, mark * tag[j], v, 1.0);
+    if (j < nlocal || newton) add(j, mark * tag[i], v, -1.0);
   });
   if (newton) {
     reverse_what = REVERSE_RECORDS;
@@ -211,8 +212,9 @@ void FixContactHistory::map_to_list()
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const tagint other = tag[jlist[jj] & NEIGHMASK];
       for (int k = 0; k < count; k++) {
-        if (static_cast<tagint>(ubuf(mine[k * entry()]).i) != other) continue;
-        t[jj] = 1;
+        const tagint stored = static_cast<tagint>(ubuf(mine[k * entry()]).i);
+        if (stored != other && stored != -other) continue;
+        t[jj] = stored < 0 ? 2 : 1;
         std::copy_n(mine + k * entry() + 1, nvalue, v + jj * nvalue);
         break;
       }

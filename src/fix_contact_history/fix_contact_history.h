@@ -82,7 +82,8 @@ class FixContactHistory : public Fix {
   std::vector<double> value;
 
   // Per atom (owned and ghost): its partners' records in the pool, each the partner's tag
-  // (ubuf) and the values in this atom's frame (entry doubles), from record_first[i] on.
+  // (ubuf, its sign the touched flag: marked) and the values in this atom's frame (entry doubles),
+  // from record_first[i] on.
   // Records are never changed in place (copy_arrays may share them): a new one is appended.
   std::vector<double> pool;
   std::vector<int> record_first, record_count;
@@ -93,6 +94,9 @@ class FixContactHistory : public Fix {
   void store_from_list();
   void map_to_list();
   void add(int i, tagint other, const double *v, double sign);
+  // The touched flag travels with a record as the sign of the partner's tag: 1 (tag > 0) or 2
+  // (tag < 0; the pair style's contact that has slid, lubricated::history_flag).
+  static tagint marked(char flag) { return flag == 2 ? -1 : 1; }
   double *append_record(int i, int count);
   int pack_record(int i, double *buf) const;
   int unpack_record(int i, const double *buf);

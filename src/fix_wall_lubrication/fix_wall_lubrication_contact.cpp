@@ -100,12 +100,12 @@ lub::ContactForces FixWallLubricationBase::contact_forces_of(int i, double mass,
     // An added mass moves with the sphere, not with its turning (contact_mass.h).
     if (contact_mass.carries_added_mass())
       p.tangential_mass = lub::tangential_mass_of_sides(1.0 / mass, atom->rmass[i], 0.0, 0.0);
-    if (h) slot = {h, h[3] != 0.0, !update->setupflag};
+    if (h) slot = lub::history_slot(h, h[3], !update->setupflag);
   }
   const lub::ContactForces forces =
       tangential_on ? lub::contact_forces<true, lub::Partner::wall>(model, p, slot, pass.when, shear_pending)
                     : lub::contact_forces<false, lub::Partner::wall>(model, p, slot, pass.when);
-  if (h) h[3] = slot.touched;
+  if (h) h[3] = lub::history_flag(slot);
   return forces;
 }
 

@@ -80,7 +80,21 @@ struct HistorySlot {
   // elongation acts as it is and nothing is written (as LAMMPS's granular styles, which do not
   // update history in set-up); any number of set-ups then leaves the contact as it was.
   bool advance = true;
+  // Whether the spring has slid (Coulomb) at any step of the contact: only one that stuck
+  // throughout is released after its half oscillation (tangential_release_force).
+  bool slid = false;
 };
+
+// The touched flag as engines store it (one number per contact: 0 apart, 1 stuck throughout, 2
+// slid at some step), and back.
+inline double history_flag(const HistorySlot &slot)
+{
+  return slot.touched ? (slot.slid ? 2.0 : 1.0) : 0.0;
+}
+inline HistorySlot history_slot(double *elongation, double flag, bool advance)
+{
+  return HistorySlot{elongation, flag != 0.0, advance, flag == 2.0};
+}
 
 struct ContactForces {
   NormalForce normal;    // along n, and the spring's energy
@@ -123,6 +137,17 @@ __attribute__((noinline)) inline Vec3 pair_roll_film(const ContactModel &m, cons
                                              film.eps_saturation, film.eps_release, p.reduced_radius);
   return roll_film_torque(tm, minus(p.omega_i, p.omega_j), p.n, gamma, rolling_inertia(p), share_rate);
 }
+// The normal force that bounds a release (tangential_release_force) by Coulomb: what is left of
+// the contact's now and the spring-dashpot's over the leapfrog kick the release completes (the
+// last one in overlap stands for the step from half a step before it: the overlap there, half a
+// step's motion more than at the last evaluation, and the normal velocity of the last step).
+inline double release_load(const ContactModel &m, const ContactPoint &p, const NormalForce &normal)
+{
+  const SpringDashpot &law = m.normal.contact;
+  const double overlap = std::max(0.0, 1.5 * p.u_n * m.tangential.dt - p.gap);
+  return std::fabs(normal.contact) +
+         p.reduced_mass * (law.stiffness_per_mass * overlap + law.damping_per_mass * std::fabs(p.u_n));
+}
 }    // namespace detail
 
 // The whole contact. TANGENTIAL false: the normal interaction alone (no tangential field of p
@@ -156,13 +181,18 @@ contact_forces(const ContactModel &m, const ContactPoint &p, HistorySlot &histor
                               : history.touched ? 1.0
                                                 : first_contact_fraction(p.gap, p.u_n, tm.dt);
       Vec3 delta{h[0], h[1], h[2]};
-      f = tangential_contact_force(tm, delta, p.n, s, m_t, normal.contact, fraction);
+      bool slid;
+      f = tangential_contact_force(tm, delta, p.n, s, m_t, normal.contact, fraction, &slid);
       if (history.advance) {
         h[0] = delta.x, h[1] = delta.y, h[2] = delta.z;
+        history.slid = (history.touched && history.slid) || slid;
         history.touched = true;
       }
     } else if (history.touched && history.advance) {
-      history.touched = false;
+      // The overlap ended within the last step: the spring is released, then forgotten.
+      if (tm.contact_active() && !history.slid && p.gap - p.u_n * tm.dt < 0.0)
+        f = tangential_release_force(tm, Vec3{h[0], h[1], h[2]}, p.n, s, m_t, detail::release_load(m, p, normal));
+      history.touched = history.slid = false;
       h[0] = h[1] = h[2] = 0.0;
     }
   }

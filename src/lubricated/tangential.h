@@ -101,6 +101,9 @@ struct TangentialModel {
   double rolling = 0.0;           // mu_r; 0: no rolling resistance
   double stiffness_step = 0.0;    // k' / m_t  [1/time^2]
   double damping_step = 0.0;      // c' / m_t  [1/time]
+  // The oscillator itself (contact_step.h, OscillatorStep), for the release of a spring
+  // (tangential_release_force): a, omega, E = exp(-a dt), C = cos(omega dt), S = sin(omega dt).
+  double decay_rate = 0.0, omega = 0.0, E = 0.0, C = 1.0, S = 0.0;
   double dt = 0.0;
   // Shear film: F = -2 pi mu_f R_e ln(eps_al / max(eps, eps_1)) s for eps_2 < eps < eps_al.
   double two_pi_mu = 0.0;    // 2 pi mu_f = 6 pi mu_f / 3; 0: no shear film
@@ -123,14 +126,15 @@ inline TangentialModel make_tangential_model(const Coefficients &c, double t_c, 
   const OscillatorStep o = oscillator_step(c.tangential_restitution(), t_c, dt);
   m.stiffness_step = o.stiffness_step;
   m.damping_step = o.damping_step;
+  m.decay_rate = o.decay_rate, m.omega = o.omega, m.E = o.E, m.C = o.C, m.S = o.S;
   if (c.wet() && c.shear_film()) m.two_pi_mu = 2.0 * pi * c.viscosity;
   if (c.wet() && c.roll_film()) m.roll_mu = c.viscosity;
   return m;
 }
 
-// Whether the tangential contact acts: in overlap. Known limitation: an impact whose entry
-// falls on a step boundary to round-off can gain or lose one step of tangential damping
-// (up to 2 ln(1/e_t) / N_c of the slip) depending on the sign of the round-off.
+// Whether the tangential contact acts: in overlap (a contact that sticks throughout is released
+// after its half oscillation, tangential_release_force, however many evaluations fall in the
+// overlap).
 inline bool tangential_in_contact(double gap)
 {
   return gap < 0.0;
@@ -181,7 +185,7 @@ __attribute__((always_inline)) inline Vec3 elongation_in_tangent_plane(const Vec
 __attribute__((always_inline)) inline Vec3 tangential_contact_force(const TangentialModel &m, Vec3 &delta,
                                                                     const Vec3 &n, const Vec3 &s,
                                                                     double tangential_mass, double normal_force,
-                                                                    double first_fraction = 1.0)
+                                                                    double first_fraction = 1.0, bool *slid = nullptr)
 {
   delta = plus(elongation_in_tangent_plane(delta, n), scaled(s, first_fraction * m.dt));
   const Vec3 f = scaled(plus(scaled(delta, m.stiffness_step), scaled(s, m.damping_step)), -tangential_mass);
@@ -192,7 +196,53 @@ __attribute__((always_inline)) inline Vec3 tangential_contact_force(const Tangen
   const double inverse_mass = 1.0 / tangential_mass, inverse_stiffness = -1.0 / m.stiffness_step;
   const Vec3 held = scaled(plus(scaled(capped, inverse_mass), scaled(s, m.damping_step)), inverse_stiffness);
   delta = {slides ? held.x : delta.x, slides ? held.y : delta.y, slides ? held.z : delta.z};
+  if (slid) *slid = slides;
   return capped;
+}
+
+// The first evaluation after the overlap of a contact that stuck throughout has ended: the force
+// on i that completes the spring's half oscillation. With the elongation started at the entry as
+// above, the leapfrog's elongations are the samples, one per step, of an oscillator x(t) of the
+// spring's a and omega through delta = (f - 1) s0 dt a step before the entry's step and f s0 dt
+// after it; half a period later, x(t + t_c) = -e_t x(t), so the slip over the step that starts
+// N_c steps after the one before the entry, where x comes back through zero, is -e_t s0. The
+// leapfrog reaches it after exactly N_c evaluations in overlap; a contact that lasts a little
+// more or less than N_c steps (a film in the overlap, the round-off of an entry on a step
+// boundary, N_c not a whole number) has one evaluation more or fewer. This force sets the slip to
+// x's over the whole step in which x comes back through zero, x from the last elongation
+// delta_m (history, rotated into the current tangent plane) and the slip s of the step since,
+// x(t) = exp(-a t) (A cos omega t + B sin omega t), A = delta_m, x(dt) = delta_m + s dt: nothing
+// where that is the last step, one more step of the oscillator or one less where it is the next
+// or the one before. A sticking impact thus reverses the slip with exactly e_t whatever its phase
+// (N_c a whole number; otherwise to the step's part of the oscillation). Coulomb: at most mu F_n,
+// F_n the normal load of the step it completes (contact.h, detail::release_load). Energy: the
+// slip is the oscillator's, which never holds more than the contact did.
+inline Vec3 tangential_release_force(const TangentialModel &m, const Vec3 &elongation, const Vec3 &n, const Vec3 &s,
+                                     double tangential_mass, double normal_force)
+{
+  const double length_sq = dot(elongation, elongation);
+  if (!(m.E > 0.0 && m.S > 0.0 && length_sq > 0.0)) return {};    // e_t = 0: the slip is already 0
+  const double dt = m.dt, w = m.omega;
+  const Vec3 A = elongation_in_tangent_plane(elongation, n);
+  const Vec3 B = scaled(minus(scaled(plus(A, scaled(s, dt)), 1.0 / m.E), scaled(A, m.C)), 1.0 / m.S);
+  // x along A back through zero: omega t = atan2(B.A, |A|^2) + pi / 2 (mod pi), in (0, pi) or a
+  // half period before; the step it falls in, counted from the last evaluation in overlap.
+  const double rest = (std::atan2(dot(B, A), dot(A, A)) + 0.5 * pi) / w;
+  const double nearest = (rest - pi / w > -dt ? rest - pi / w : rest) / dt;
+  // On a step boundary (to rounding, or to what moves a pair's line of centres: an entry on one,
+  // f = 1 or f -> 0), the step nearer the last.
+  const double boundary = std::round(nearest);
+  const double step = std::fabs(nearest - boundary) > 2e-3 ? std::floor(nearest)
+                      : boundary > 0.0                     ? boundary - 1.0
+                                                           : boundary;
+  if (step == 0.0 || std::fabs(step) > 1.0) return {};
+  auto x = [&](double t) {
+    return scaled(plus(scaled(A, std::cos(w * t)), scaled(B, std::sin(w * t))), std::exp(-m.decay_rate * t));
+  };
+  const Vec3 slip = scaled(minus(x((step + 1.0) * dt), x(step * dt)), 1.0 / dt);
+  const Vec3 f = scaled(minus(slip, s), tangential_mass / dt);
+  const double limit = m.friction * std::fabs(normal_force), f2 = dot(f, f);
+  return f2 > limit * limit ? scaled(f, limit / std::sqrt(f2)) : f;
 }
 
 // Rolling resistance (constant-torque model, Ai et al., Powder Technol. 206, 269, 2011,

@@ -117,7 +117,7 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
       out_j[ncandidate] = j;
       if (TANGENTIAL) out_jj[ncandidate] = jj;
       int keep = rsq < (SPLIT ? touch * touch : near * near);
-      if (TANGENTIAL && touched) keep |= touched[jj];
+      if (TANGENTIAL && touched) keep |= touched[jj] != 0;    // the flag is 1, 2 or 3 (lubricated::history_flag)
       if (WET && SPLIT) {
         film_out_i[nfilm_here] = i;
         film_out_j[nfilm_here] = j;
@@ -221,7 +221,7 @@ inline void PairLubricatedSpringDashpot::set_tangential_point(const PairLoop &lo
     p.mass_i = inverse && inverse[i] == 0.0 ? 0.0 : loop.rmass[i];
     p.mass_j = inverse && inverse[j] == 0.0 ? 0.0 : loop.rmass[j];
   }
-  if (history) slot = {history->values(i) + 3 * jj, history->touched(i)[jj] != 0, loop.steps};
+  if (history) slot = lub::history_slot(history->values(i) + 3 * jj, history->touched(i)[jj], loop.steps);
 }
 
 // The pair's whole force (fx, fy, fz) on i, the opposite on j, and its tallies.
@@ -270,7 +270,7 @@ inline void PairLubricatedSpringDashpot::contact(const PairLoop &loop, int i, in
     set_tangential_point(loop, i, j, jj, model, p, slot);
     const lub::ContactForces c = lub::contact_forces<true>(model, p, slot, loop.when);
     fn = c.normal;
-    if (history) history->touched(i)[jj] = slot.touched;
+    if (history) history->touched(i)[jj] = static_cast<char>(lub::history_flag(slot));
     if (records) share = lub::film_share(fn.lubrication, p.reduced_mass, p.u_n, kick_time);
     if (records && budget.records_shear())
       budget.record_films(i, j, fn.lubrication, c.shear, lub::contact_film_share(share, c.shear_share(kick_time)),
@@ -318,10 +318,12 @@ inline void PairLubricatedSpringDashpot::evaluate_pair(const PairLoop &loop, con
   const double outer = radsum + reach;
   if (rsq >= outer * outer) {
     // Apart and out of this pair's film (pass 1 used the types' largest): only a contact
-    // starting, or a film entered or left, within a step can act.
-    forget();
-    if (!model.normal.exact) return;
-    if (!within_a_step(rsq, dvx * delx + dvy * dely + dvz * delz, dt, outer * outer)) return;
+    // starting or ending, or a film entered or left, within a step can act (a contact that
+    // ended within the last step releases its spring: contact_forces forgets it then).
+    if (!model.normal.exact || !within_a_step(rsq, dvx * delx + dvy * dely + dvz * delz, dt, outer * outer)) {
+      forget();
+      return;
+    }
   }
   if (rsq == 0.0) {    // coincident centres: no normal direction is defined
     forget();

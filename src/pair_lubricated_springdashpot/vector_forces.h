@@ -213,7 +213,7 @@ template <bool TANGENTIAL, class Evaluate> class PairLubricatedSpringDashpot::Ve
       const int e = list_entry[c];
       double *h = history_values + 3 * e;
       h[0] = next[0][c], h[1] = next[1][c], h[2] = next[2][c];
-      history_touched[e] = next_touched[c] != 0.0;
+      history_touched[e] = static_cast<char>(next_touched[c]);
       out[nrest] = c;
       nrest += on[c] == 0.0;
     }

@@ -87,8 +87,11 @@ friction_normal(const lubricated::NormalModel &normal, const lubricated::PairGeo
   // The spring acts: in sustained contact and touched (EVENTS: in overlap).
   out.stick = EVENTS ? gap < 0.0 : sustained & (touched != 0.0);
   // Whether the lane is done here, as doubles (a pair of immovable atoms, m_e = 0, is not: the
-  // general loop drops it); m_e > 0 in a bool mask stops GCC 12 with inverse masses.
-  out.on = ((EVENTS ? resolved : out.stick | apart) & (g.r > 0.0) ? 1.0 : 0.0) * (g.m_e > 0.0 ? 1.0 : 0.0);
+  // general loop drops it); m_e > 0 in a bool mask stops GCC 12 with inverse masses. A contact
+  // whose overlap ended within the last step (touched, apart now, in overlap a step ago) is the
+  // general loop's: its spring's release (tangential_release_force).
+  const bool released = EVENTS & (gap >= 0.0) & (gap - g.u_n * dt < 0.0) & (touched != 0.0);
+  out.on = ((EVENTS ? resolved & !released : out.stick | apart) & (g.r > 0.0) ? 1.0 : 0.0) * (g.m_e > 0.0 ? 1.0 : 0.0);
   return out;
 }
 
@@ -135,7 +138,8 @@ friction_contact_loop(const Atoms &atoms, const lubricated::ContactModel &model,
     // The part of the last step in overlap: all of it unless the contact is new (EVENTS).
     const double fraction = EVENTS & (touched[c] == 0.0) ? lub::first_contact_fraction(gap, g.u_n, tm.dt) : 1.0;
     lub::Vec3 delta{delta_x[c], delta_y[c], delta_z[c]};
-    const lub::Vec3 spring = lub::tangential_contact_force(tm, delta, nv, s, m_t, state.fn.contact, fraction);
+    bool slid;
+    const lub::Vec3 spring = lub::tangential_contact_force(tm, delta, nv, s, m_t, state.fn.contact, fraction, &slid);
     // Apart: no spring. EVENTS: selects (a lane it leaves may hold a NaN, from m_e = 0); the other
     // loop keeps its products (selects there stop GCC 12 vectorising one of its forms).
     const bool spring_on = in_contact != 0.0;
@@ -166,12 +170,13 @@ friction_contact_loop(const Atoms &atoms, const lubricated::ContactModel &model,
     slip_sq[c] = s.x * s.x + s.y * s.y + s.z * s.z;
     tangential_mass[c] = ok ? m_t : 1.0;
     // Apart: a touching contact's elongation forgotten; else (not done) as it was.
-    // (touched and on are 0 or 1: a product, as bool masks here stop GCC 12 vectorising.)
-    const double kept = 1.0 - on * touched[c];
+    // (on is 0 or 1: a product, as bool masks here stop GCC 12 vectorising.)
+    const double kept = 1.0 - on * (touched[c] != 0.0 ? 1.0 : 0.0);
     new_x[c] = spring_on ? delta.x : kept * delta_x[c];
     new_y[c] = spring_on ? delta.y : kept * delta_y[c];
     new_z[c] = spring_on ? delta.z : kept * delta_z[c];
-    new_touched[c] = ok ? in_contact : touched[c];
+    // The history's flag (lubricated::history_flag): 1 stuck throughout, 2 slid at some step.
+    new_touched[c] = ok ? in_contact * (slid | (touched[c] == 2.0) ? 2.0 : 1.0) : touched[c];
     done[c] = on;
   }
 }

@@ -73,7 +73,9 @@ Scene draw_scene(std::mt19937_64 &rng, int pairs, double dt)
     // Every 17th pair has an immovable partner, every 61st two (no force: left to the general loop).
     s.inverse.push_back(k % 61 == 0 ? 0.0 : 1.0 / mi), s.inverse.push_back(k % 17 == 0 ? 0.0 : 1.0 / mj);
     s.pair_i.push_back(2 * k), s.pair_j.push_back(2 * k + 1);
-    s.touched.push_back(unit(rng) < 0.8 ? 1.0 : 0.0);
+    // The history's flag: 0 apart, 1 stuck throughout, 2 slid at some step (lubricated::history_flag).
+    const double draw = unit(rng);
+    s.touched.push_back(draw < 0.5 ? 1.0 : draw < 0.8 ? 2.0 : 0.0);
     // An elongation mostly in the tangent plane (sometimes with a larger normal part), up to what
     // makes the contact slide.
     const double length = std::pow(10.0, -9.0 + 4.0 * unit(rng)) * dt / 1e-5;
@@ -143,11 +145,11 @@ void check_model(const Coefficients &c, bool inverse_masses, bool events, unsign
     }
     ++done_count;
     double h[3] = {s.delta_x[k], s.delta_y[k], s.delta_z[k]};
-    HistorySlot slot{h, s.touched[k] != 0.0, true};
+    HistorySlot slot = history_slot(h, s.touched[k], true);
     const ContactForces f = contact_forces<true>(model, p, slot, Evaluation::step);
     // The same with the gap moved by 1e-15 r (4.5 ulps of r) either way: the outputs' spread.
     double hp[3] = {s.delta_x[k], s.delta_y[k], s.delta_z[k]}, hm[3] = {hp[0], hp[1], hp[2]};
-    HistorySlot slot_p{hp, s.touched[k] != 0.0, true}, slot_m{hm, s.touched[k] != 0.0, true};
+    HistorySlot slot_p = history_slot(hp, s.touched[k], true), slot_m = history_slot(hm, s.touched[k], true);
     ContactPoint moved = p;
     moved.gap = p.gap + 1e-15 * r;
     const ContactForces fp = contact_forces<true>(model, moved, slot_p, Evaluation::step);
@@ -193,7 +195,7 @@ void check_model(const Coefficients &c, bool inverse_masses, bool events, unsign
     expect_close(col(15)[k], h[0], length_scale, "elongation x", k, spread(hp[0], hm[0]));
     expect_close(col(16)[k], h[1], length_scale, "elongation y", k, spread(hp[1], hm[1]));
     expect_close(col(17)[k], h[2], length_scale, "elongation z", k, spread(hp[2], hm[2]));
-    ASSERT_EQ(col(18)[k] != 0.0, slot.touched) << "pair " << k;
+    ASSERT_EQ(col(18)[k], history_flag(slot)) << "pair " << k;
   }
 }
 
