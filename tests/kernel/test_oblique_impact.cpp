@@ -20,8 +20,8 @@ struct Body {
 };
 
 struct Impact {
-  double beta = 0.0;        // -s' / s0 along the first slip
-  int evaluations = 0;      // evaluations in overlap
+  double beta = 0.0;      // -s' / s0 along the first slip
+  int evaluations = 0;    // evaluations in overlap
 };
 
 constexpr double speed = 0.5, slip_speed = 0.05;    // normal approach, initial slip [m/s]
@@ -102,7 +102,7 @@ template <Partner PARTNER> void sweep(double n_contact, bool wet, int &shorter, 
     ck.t_contact = contact_time;
     const Impact r = impact<PARTNER>(ck, larger, smaller, phase, dt, steps);
     EXPECT_NEAR(r.beta, c.tangential_restitution(), 1e-9) << "phase " << phase << " N_c " << n_contact;
-    shorter += r.evaluations < n_contact, longer += r.evaluations > n_contact;
+    shorter += r.evaluations<n_contact, longer += r.evaluations> n_contact;
   }
 }
 
