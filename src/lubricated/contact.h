@@ -185,12 +185,12 @@ contact_forces(const ContactModel &m, const ContactPoint &p, HistorySlot &histor
       f = tangential_contact_force(tm, delta, p.n, s, m_t, normal.contact, fraction, &slid);
       if (history.advance) {
         h[0] = delta.x, h[1] = delta.y, h[2] = delta.z;
-        history.slid = (history.touched && history.slid) || slid;
+        history.slid = history.slid || slid;
         history.touched = true;
       }
     } else if (history.touched && history.advance) {
       // The overlap ended within the last step: the spring is released, then forgotten.
-      if (tm.contact_active() && !history.slid && p.gap - p.u_n * tm.dt < 0.0)
+      if (tm.contact_active() && !history.slid && overlap_just_ended(p.gap, p.u_n, tm.dt))
         f = tangential_release_force(tm, Vec3{h[0], h[1], h[2]}, p.n, s, m_t, detail::release_load(m, p, normal));
       history.touched = history.slid = false;
       h[0] = h[1] = h[2] = 0.0;

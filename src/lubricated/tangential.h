@@ -147,6 +147,13 @@ inline double first_contact_fraction(double gap, double u_n, double dt)
   return std::min(1.0, std::max(0.0, gap / (u_n * dt)));
 }
 
+// Whether a contact's overlap ended within the last step (apart now, in overlap a step ago): the
+// evaluation that releases its spring (tangential_release_force).
+__attribute__((always_inline)) inline bool overlap_just_ended(double gap, double u_n, double dt)
+{
+  return (gap >= 0.0) & (gap - u_n * dt < 0.0);
+}
+
 // The slip of the surfaces, s = (v_i - v_j) - lever x n with its normal part removed; lever =
 // R_i omega_i + R_j omega_j (contact_lever; a wall: R_i omega_i).
 __attribute__((always_inline)) inline Vec3 surface_slip(const Vec3 &dv, const Vec3 &lever, const Vec3 &n)

@@ -117,7 +117,7 @@ int PairLubricatedSpringDashpot::select_pairs(int &next, int &nfilm, int limit)
       out_j[ncandidate] = j;
       if (TANGENTIAL) out_jj[ncandidate] = jj;
       int keep = rsq < (SPLIT ? touch * touch : near * near);
-      if (TANGENTIAL && touched) keep |= touched[jj] != 0;    // the flag is 1, 2 or 3 (lubricated::history_flag)
+      if (TANGENTIAL && touched) keep |= touched[jj] != 0;    // the flag is 1 or 2 (lubricated::history_flag)
       if (WET && SPLIT) {
         film_out_i[nfilm_here] = i;
         film_out_j[nfilm_here] = j;

@@ -90,7 +90,7 @@ friction_normal(const lubricated::NormalModel &normal, const lubricated::PairGeo
   // general loop drops it); m_e > 0 in a bool mask stops GCC 12 with inverse masses. A contact
   // that stuck throughout and whose overlap ended within the last step (touched 1, apart now, in
   // overlap a step ago) is the general loop's: its spring's release (tangential_release_force).
-  const bool released = EVENTS & (gap >= 0.0) & (gap - g.u_n * dt < 0.0) & (touched == 1.0);
+  const bool released = EVENTS & lub::overlap_just_ended(gap, g.u_n, dt) & (touched == 1.0);
   out.on = ((EVENTS ? resolved & !released : out.stick | apart) & (g.r > 0.0) ? 1.0 : 0.0) * (g.m_e > 0.0 ? 1.0 : 0.0);
   return out;
 }
