@@ -35,7 +35,6 @@ void FilmBudget::init(bool limit_atom, bool wet_pairs, bool shear_films, const F
   limit_per_atom = limit_atom || solve.on;
   solve_on = solve.on;
   solve_step->configure(solve);
-  solve_step->start_run();
   solve_step->clear_counts();
   participants.clear();
   any_wet_participant = false;
@@ -49,6 +48,7 @@ void FilmBudget::init(bool limit_atom, bool wet_pairs, bool shear_films, const F
   shear_records = enabled && (shear_films || roll_films);
   roll_records = enabled && roll_films;
   if (!enabled) scale_of_atom.clear();
+  solve_step->start_run(participants);
 }
 
 void FilmBudget::grow_atoms()

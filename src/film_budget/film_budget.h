@@ -51,6 +51,9 @@ class FilmBudget : protected Pointers {
   void init(bool limit_per_atom, bool wet_pairs, bool shear_films, const FilmSolveSettings &solve = {},
             bool roll_films = false);
   bool kept() const { return enabled; }
+  // `limit implicit` with the budget kept: the films of atoms over budget are solved, the
+  // participants' with them.
+  bool solves() const { return enabled && solve_on; }
   bool wet_participants() const { return any_wet_participant; }
   // This step's: whether the films can exceed any atom's budget (else nothing is recorded or
   // scaled), and an owned atom's film scale once finish() computed it.

@@ -28,7 +28,7 @@ void FilmSolveStep::configure(const FilmSolveSettings &settings)
 
 // The links of the records in the solve, those this rank solves first: every film once over all
 // ranks (with newton off a film with a ghost partner is recorded on both ranks; the one holding
-// the smaller tag solves it). Returns how many are solved here.
+// the smaller tag solves it), the walls' after this rank's pairs. Returns how many are solved here.
 int FilmSolveStep::collect_links(const Records &records, const double *scale, const FilmBudget::TypeTables &tables)
 {
   double **x = atom->x;
@@ -39,7 +39,7 @@ int FilmSolveStep::collect_links(const Records &records, const double *scale, co
   links.clear();
   link_record.clear();
   int n_solved = 0;
-  for (int pass = 0; pass < 2; pass++)
+  for (int pass = 0; pass < 2; pass++) {
     for (int r = 0; r < records.count; r++) {
       const int i = records.i[r], j = records.j[r];
       if (std::min(scale[i], scale[j]) == 1.0) continue;
@@ -52,7 +52,25 @@ int FilmSolveStep::collect_links(const Records &records, const double *scale, co
       link_record.push_back(r);
       n_solved += here;
     }
+    if (pass == 0) n_solved += collect_wall_links(scale);
+  }
   return n_solved;
+}
+
+// The walls' films of owned atoms over budget (their links act on owned atoms only).
+int FilmSolveStep::collect_wall_links(const double *scale)
+{
+  wall_links.clear();
+  int added = 0;
+  for (FilmBudgetParticipant *wall : walls) {
+    const int first = static_cast<int>(links.size());
+    const int count = wall->add_film_links(scale, links);
+    if (count == 0) continue;
+    wall_links.push_back({wall, first, count});
+    link_record.insert(link_record.end(), count, -1);
+    added += count;
+  }
+  return added;
 }
 
 // Per owned and ghost atom: inverse mass (the contact masses' where some atom is immovable),
@@ -98,6 +116,7 @@ void FilmSolveStep::gather_other_forces(const Records &records)
       other_force[lub::film_dofs * k + d] = f[k][d], other_force[lub::film_dofs * k + 3 + d] = torque[k][d];
   for (std::size_t k = 0; k < links.size(); k++) {
     const lub::FilmLink &link = links[k];
+    if (link.j < 0) continue;    // a wall's film is applied by its fix, after the solve
     const int r = link_record[k], i = link.i, j = link.j;
     const lub::Vec3 shear = records.shear
                                 ? lub::Vec3{records.shear[3 * r], records.shear[3 * r + 1], records.shear[3 * r + 2]}
@@ -117,8 +136,11 @@ void FilmSolveStep::gather_other_forces(const Records &records)
   if (newton_pair) exchange.reverse(other_force.data(), lub::film_dofs);
 }
 
-void FilmSolveStep::start_run()
+void FilmSolveStep::start_run(const std::vector<FilmBudgetParticipant *> &participants)
 {
+  walls.clear();
+  for (FilmBudgetParticipant *participant : participants)
+    if (participant->wet()) walls.push_back(participant);
   warned = false;
   drag_fix = nullptr;
   for (int k = 0; k < modify->nfix && !drag_fix; k++)
@@ -179,6 +201,7 @@ void FilmSolveStep::solve(const Records &records, const double *scale, const Fil
   for (int e = 0; e < lub::film_dofs * nall; e++)
     velocity[e] += increment[e];
   apply_solved_films(records, tally);
+  apply_solved_wall_films();
 }
 
 // Per link: its force at w' (the solved film) in place of the step-exact film the loops applied,
@@ -194,6 +217,7 @@ void FilmSolveStep::apply_solved_films(const Records &records, FilmBudget::Tally
   const double *radius = atom->radius;
   for (std::size_t k = 0; k < links.size(); k++) {
     const lub::FilmLink &link = links[k];
+    if (link.j < 0) continue;
     const int r = link_record[k], i = link.i, j = link.j;
     const lub::FilmLinkForce solved = lub::film_link_force(link, atoms, velocity.data(), false);
     const lub::Vec3 shear = records.shear
@@ -215,6 +239,21 @@ void FilmSolveStep::apply_solved_films(const Records &records, FilmBudget::Tally
     if (tally)
       tally->tally_film_correction_xyz(i, j, change.x, change.y, change.z, x[i][0] - x[j][0], x[i][1] - x[j][1],
                                        x[i][2] - x[j][2]);
+  }
+}
+
+// Per wall link: its force and torque on the atom at w' (the wall's velocity counted), handed to
+// its fix, which applies them in place of its step-exact films (and tallies them).
+void FilmSolveStep::apply_solved_wall_films()
+{
+  lub::FilmAtoms atoms;
+  atoms.owned = atom->nlocal, atoms.total = atom->nlocal + atom->nghost;
+  atoms.radius = atom->radius;
+  for (const WallLinks &range : wall_links) {
+    wall_solved.resize(range.count);
+    for (int k = 0; k < range.count; k++)
+      wall_solved[k] = lub::film_link_force(links[range.first + k], atoms, velocity.data(), true);
+    range.wall->take_solved_films(wall_solved.data(), range.count);
   }
 }
 

@@ -2,8 +2,9 @@
    The coupled film solve of pair_style lubricated/springdashpot (`limit implicit`,
    doc/film_solve.rst): after the pair loops, the films of the atoms whose film budget binds
    (load D > 1) are taken out of the step-exact forces and solved together, implicitly, by the
-   kernel's preconditioned conjugate gradients (lubricated/film_solve.h); the films of atoms
-   within their budget keep the step-exact per-pair form. Called by FilmBudget::finish.
+   kernel's preconditioned conjugate gradients (lubricated/film_solve.h), the wall fixes' films
+   of those atoms with them (FilmBudgetParticipant's links); the films of atoms within their
+   budget keep the step-exact per-pair form. Called by FilmBudget::finish.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_LUBRICATED_FILM_SOLVE_STEP_H
@@ -25,8 +26,9 @@ class FilmSolveStep : protected Pointers {
 
   void configure(const FilmSolveSettings &settings);
   // At each run's init: the non-convergence warning may be given again; the fix whose drag the
-  // solve takes implicitly (implicit_drag.h), if any.
-  void start_run();
+  // solve takes implicitly (implicit_drag.h), if any; the budget's participants (the wet walls),
+  // whose films of atoms over budget join the solve.
+  void start_run(const std::vector<FilmBudgetParticipant *> &participants);
   // Before each evaluation's finish: no solve yet.
   void clear_counts() { iterations = 0, solved = 0; }
   int last_iterations() const { return iterations; }
@@ -53,8 +55,18 @@ class FilmSolveStep : protected Pointers {
   lubricated::FilmSolver solver;
   bool warned = false;
   int iterations = 0, solved = 0;
-  std::vector<lubricated::FilmLink> links;    // solved here first, then (newton off) the others' copies
-  std::vector<int> link_record;               // each link's record
+  // Solved here first (the pairs', then the walls'), then (newton off) the others' copies.
+  std::vector<lubricated::FilmLink> links;
+  std::vector<int> link_record;    // each pair link's record
+  std::vector<FilmBudgetParticipant *> walls;
+  struct WallLinks {
+    FilmBudgetParticipant *wall;
+    int first, count;    // in links
+  };
+  std::vector<WallLinks> wall_links;
+  std::vector<lubricated::FilmLinkForce> wall_solved;
+  int collect_wall_links(const double *scale);
+  void apply_solved_wall_films();
   std::vector<double> inverse_mass, inverse_inertia, velocity, other_force, increment;
   ImplicitDragParticipant *drag_fix = nullptr;
   std::vector<double> drag, rotational_drag;    // per owned atom, where drag_fix acts this step

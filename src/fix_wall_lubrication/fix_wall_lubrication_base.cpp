@@ -20,6 +20,7 @@
 #include "update.h"
 #include "utils.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <mpi.h>
@@ -160,6 +161,7 @@ double FixWallLubricationBase::memory_usage()
 void FixWallLubricationBase::clear_films()
 {
   film_atom.clear(), film_force.clear(), film_load.clear(), shear_film.clear();
+  film_link.clear(), link_entry.clear(), solved_link.clear(), entry_solved.clear();
 }
 
 // The deferred films' entry of owned atom i: a new one unless i's walls came just before.
@@ -194,7 +196,11 @@ void FixWallLubricationBase::apply_films()
     const double *fs = shear ? shear + 6 * e : nullptr;
     const bool film = ff[0] != 0.0 || ff[1] != 0.0 || ff[2] != 0.0;
     if (!film && !(fs && (fs[0] != 0.0 || fs[1] != 0.0 || fs[2] != 0.0))) continue;
-    const double scale = by_pair ? pair_budget->scale(i) : own ? lub::film_scale_of_load(film_load[e]) : 1.0;
+    const bool solved = !entry_solved.empty() && entry_solved[e];
+    const double scale = solved    ? 1.0
+                         : by_pair ? pair_budget->scale(i)
+                         : own     ? lub::film_scale_of_load(film_load[e])
+                                   : 1.0;
     lub::Vec3 force = lub::scaled({ff[0], ff[1], ff[2]}, scale), moment;
     if (fs) {
       force = lub::plus(force, lub::scaled({fs[0], fs[1], fs[2]}, scale));
@@ -203,5 +209,38 @@ void FixWallLubricationBase::apply_films()
     }
     f[i][0] += force.x, f[i][1] += force.y, f[i][2] += force.z;
     tally(i, force, moment);
+  }
+}
+
+// The links of the deferred films of owned atoms whose scale is below 1 (all of an atom's walls).
+int FixWallLubricationBase::add_film_links(const double *scale, std::vector<lub::FilmLink> &links)
+{
+  solved_link.clear();
+  if (!links_pending) return 0;
+  for (std::size_t k = 0; k < film_link.size(); k++)
+    if (scale[film_link[k].i] < 1.0) {
+      links.push_back(film_link[k]);
+      solved_link.push_back(static_cast<int>(k));
+    }
+  return static_cast<int>(solved_link.size());
+}
+
+// The solved films replace the whole entries of their atoms: the normal and shear films' force,
+// and the torque (with the shear film).
+void FixWallLubricationBase::take_solved_films(const lub::FilmLinkForce *solved, int count)
+{
+  entry_solved.assign(film_atom.size(), 0);
+  for (int m = 0; m < count; m++) {
+    const std::size_t e = link_entry[solved_link[m]];
+    double *ff = &film_force[3 * e];
+    double *fs = shear_pending ? &shear_film[6 * e] : nullptr;
+    if (!entry_solved[e]) {
+      entry_solved[e] = 1;
+      std::fill(ff, ff + 3, 0.0);
+      if (fs) std::fill(fs, fs + 6, 0.0);
+    }
+    const lub::FilmLinkForce &f = solved[m];
+    ff[0] += f.force_i.x, ff[1] += f.force_i.y, ff[2] += f.force_i.z;
+    if (fs) fs[3] += f.torque_i.x, fs[4] += f.torque_i.y, fs[5] += f.torque_i.z;
   }
 }

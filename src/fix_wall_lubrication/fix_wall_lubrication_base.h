@@ -51,6 +51,10 @@ class FixWallLubricationBase : public Fix, public FilmBudgetParticipant, public 
   void add_film_loads(double *load, int nlocal) const override;
   // Adds to each owned atom the bound on its wet walls' film shares (lubricated/film_budget.h).
   void add_film_share_bounds(double *bound, int nlocal) const override = 0;
+  // The pair style's coupled film solve (`limit implicit`): the deferred films of atoms over
+  // budget as links, then their solved forces in place of the step-exact ones (apply_films).
+  int add_film_links(const double *scale, std::vector<lubricated::FilmLink> &links) override;
+  void take_solved_films(const lubricated::FilmLinkForce *solved, int count) override;
 
   // The contacts of the last evaluation in overlap then and a step before (sustained), for the
   // pair style's contact-network check (contact_network/contact_network_check.h).
@@ -126,6 +130,14 @@ class FixWallLubricationBase : public Fix, public FilmBudgetParticipant, public 
   void clear_films();
   std::size_t film_entry(int i);
   bool films_pending = false, shear_pending = false;
+  // Under the pair style's `limit implicit` (links_pending): each deferred contact's films as a
+  // link of the coupled solve (lubricated/film_link.h) and its entry; those the solve took
+  // (solved_link), and the entries whose films it replaced (entry_solved: applied unscaled).
+  bool links_pending = false;
+  std::vector<lubricated::FilmLink> film_link;
+  std::vector<int> link_entry, solved_link;
+  std::vector<char> entry_solved;
+  void record_film_link(int i, std::size_t entry, const WallContact &contact);
   // Immovable atoms (skipped: the wall cannot move them) and rigid bodies (m_e = M_body).
   ContactMass contact_mass;
   std::vector<double> inverse_mass;

@@ -6,9 +6,11 @@
 
 #include "fix_wall_lubrication_base.h"
 
+#include "film_budget/film_budget.h"
 #include "fix_step_velocity/fix_step_velocity.h"
 #include "lubricated/film_budget.h"
 #include "lubricated/film_cavitation.h"
+#include "lubricated/film_link.h"
 #include "lubricated/load_sharing.h"
 #include "lubricated/overlap_check.h"
 
@@ -46,6 +48,7 @@ void FixWallLubricationBase::begin_evaluation(bool defer_films)
   clear_sums();
   films_pending = pass.defer_films = defer_films && model.normal.lubrication.active();
   shear_pending = pass.defer_films && model.tangential.film_active();
+  links_pending = pass.defer_films && pair_budget && pair_budget->solves();
   clear_films();
   pass.kick_time = kind.kick_time;
 
@@ -118,6 +121,7 @@ double FixWallLubricationBase::defer_contact_films(int i, double mass, const Wal
   const lub::NormalForce &fn = forces.normal;
   if (!pass.defer_films) return fn.total();
   const std::size_t entry = film_entry(i);
+  if (links_pending) record_film_link(i, entry, contact);
   double *ff = &film_force[3 * entry];
   const lub::Vec3 &n = contact.n;
   ff[0] += fn.lubrication * n.x, ff[1] += fn.lubrication * n.y, ff[2] += fn.lubrication * n.z;
@@ -131,6 +135,21 @@ double FixWallLubricationBase::defer_contact_films(int i, double mass, const Wal
   out[0] += forces.shear.x, out[1] += forces.shear.y, out[2] += forces.shear.z;
   out[3] += forces.shear_torque_i.x, out[4] += forces.shear_torque_i.y, out[5] += forces.shear_torque_i.z;
   return fn.contact;
+}
+
+// The contact's films as a link of the coupled solve, at the velocities of this evaluation.
+void FixWallLubricationBase::record_film_link(int i, std::size_t entry, const WallContact &contact)
+{
+  const double *v = pass.v[i];
+  const bool tangential = model.tangential.active();    // else no spin is read (nor needed)
+  const double *omega = tangential ? pass.omega[i] : nullptr;
+  const lub::Vec3 spin = omega ? lub::Vec3{omega[0], omega[1], omega[2]} : lub::Vec3{};
+  const lub::Vec3 wall_velocity =
+      lub::wall_velocity_at_contact({v[0], v[1], v[2]}, spin, atom->radius[i], contact.n, contact.u_n,
+                                    tangential ? &contact.dv : nullptr, tangential ? &contact.omega : nullptr);
+  film_link.push_back(
+      lub::wall_film_link(model, i, contact.n, contact.gap, contact.film, contact.reduced_radius, wall_velocity));
+  link_entry.push_back(static_cast<int>(entry));
 }
 
 // The contact's normal force, and its tangential force and torque where the model has them, on

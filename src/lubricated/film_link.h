@@ -44,4 +44,36 @@ inline FilmLink pair_film_link(const ContactModel &model, int i, int j, const Ve
   return link;
 }
 
+// A wall's films on sphere i as a link (j = -1): the gap and the unit normal n from the wall to
+// the sphere, the normal film's radius R_f, the shear film's radius, and the wall's surface
+// velocity at the contact (wall_velocity_at_contact). A wall has no rolling film.
+inline FilmLink wall_film_link(const ContactModel &model, int i, const Vec3 &n, double gap, const FilmRadius &radius,
+                               double shear_radius, const Vec3 &wall_velocity)
+{
+  FilmLink link;
+  link.i = i, link.j = -1, link.normal = n, link.wall_velocity = wall_velocity;
+  const Lubrication &film = model.normal.lubrication;
+  if (!film.active()) return link;
+  const double eps = gap / radius.value;
+  link.normal_damping = film.damping(eps, radius.value);
+  link.shear_damping = shear_film_coefficient(model.tangential, eps, film.activation_for(radius.value),
+                                              film.eps_saturation, film.eps_release, shear_radius);
+  return link;
+}
+
+// The wall's surface velocity v_w at a contact, from what a wall fix hands the contact: the
+// sphere's velocity v, spin omega and radius R, the relative normal velocity u_n (along n, from
+// the wall to the sphere) and, where the contact has tangential parts, the relative dv' and
+// omega' of relative_to_wall (wall_motion.h; nullptr: none). Its normal part v.n - u_n keeps the
+// link's u_n the contact's; its tangential part makes the link's slip P_t (v - v_w) - R omega x n
+// the contact's P_t dv' - R omega' x n (a turning wall included).
+inline Vec3 wall_velocity_at_contact(const Vec3 &v, const Vec3 &omega, double radius, const Vec3 &n, double u_n,
+                                     const Vec3 *dv, const Vec3 *omega_relative)
+{
+  const Vec3 normal = scaled(n, dot(v, n) - u_n);
+  if (!dv) return normal;
+  const Vec3 spin_of_wall = minus(omega, *omega_relative);
+  return plus(normal, tangential_part(minus(minus(v, *dv), scaled(cross(spin_of_wall, n), radius)), n));
+}
+
 }    // namespace lubricated

@@ -8,9 +8,9 @@ keywords end in an ERROR naming them, and a restart keeps the mode.
 Scenes: tools/dense_scenes.py (256 spheres on an fcc lattice, every gap in the film, St =
 5.6e-3 at mu_f = 1 Pa s; the thermo rows gain the solve's iterations and solved films, compute
 pair's 3rd and 4th values), and the polydisperse packings of test_dense_packings.py (radii
-1:10, its fixture and energy criteria), on wet walls too (whose films keep the budget's
-scaling). Newton pair off and 2 ranks solve each film once; compute pressure and the sum of
-compute stress/atom see the solved films alike.
+1:10, its fixture and energy criteria), on wet walls too (whose films of spheres over budget
+join the solve: test_film_solve_walls.py). Newton pair off and 2 ranks solve each film once;
+compute pressure and the sum of compute stress/atom see the solved films alike.
 """
 import numpy as np
 import pytest
@@ -297,7 +297,7 @@ def test_polydisperse_bed_with_contacts_never_gains(lmp, packings, bed):
 
 def test_bed_settling_on_wet_walls_never_gains(lmp, packings):
     """The walled bed with the shear film on pairs and walls (mu_f 10 Pa s, 5e-5 s, 1000 steps):
-    the pairs' films of spheres over budget solved, the walls' films scaled by the budget."""
+    the pairs' and the walls' films of spheres over budget solved together."""
     rows, log = run_energy(lmp, walled_scene(lmp, packings, 10.0, 5e-5, 1000, limit="implicit",
                                              extra="shearfilm yes"))
     implicit_was_solved(log)
