@@ -12,6 +12,7 @@
 #include "force.h"
 #include "fix.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "update.h"
 
 #include <algorithm>
@@ -184,6 +185,7 @@ void FilmSolveStep::solve(const Records &records, const double *scale, const Fil
   film_comm.sum = [this](double *values, int count) {
     MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_DOUBLE, MPI_SUM, world);
   };
+  guess_increments();
   const lub::FilmSolveResult result = solver.solve(atoms, links.data(), n_solved, step.kick_time, velocity.data(),
                                                    other_force.data(), increment.data(), options, film_comm);
   iterations = result.iterations, solved = n_solved;
@@ -202,6 +204,21 @@ void FilmSolveStep::solve(const Records &records, const double *scale, const Fil
     velocity[e] += increment[e];
   apply_solved_films(records, tally);
   apply_solved_wall_films();
+}
+
+// Where the last steps were solved in a row and no atom changed its index since (no list build,
+// no set-up), the solve starts from their increments extrapolated (film_solve.h): along a
+// trajectory they change little from step to step, and the iterations fall to a fraction.
+void FilmSolveStep::guess_increments()
+{
+  const int nlocal = atom->nlocal;
+  const bool in_a_row =
+      neighbor->ago > 0 && !update->setupflag && update->ntimestep == last_solve_step + 1 && nlocal == last_nlocal;
+  known_increments = in_a_row ? std::min(known_increments + 1, 2) : 0;
+  last_solve_step = update->ntimestep, last_nlocal = nlocal;
+  const int n = lub::film_dofs * nlocal;
+  if (known_increments == 1) previous_increment.resize(n);
+  options.warm_start = lub::film_increment_guess(increment.data(), previous_increment.data(), n, known_increments);
 }
 
 // Per link: its force at w' (the solved film) in place of the step-exact film the loops applied,
@@ -261,6 +278,6 @@ double FilmSolveStep::memory_usage() const
 {
   return links.capacity() * sizeof(lub::FilmLink) + link_record.capacity() * sizeof(int) +
          (inverse_mass.capacity() + inverse_inertia.capacity() + velocity.capacity() + other_force.capacity() +
-          increment.capacity()) *
+          increment.capacity() + previous_increment.capacity()) *
              sizeof(double);
 }

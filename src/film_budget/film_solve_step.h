@@ -55,6 +55,13 @@ class FilmSolveStep : protected Pointers {
   lubricated::FilmSolver solver;
   bool warned = false;
   int iterations = 0, solved = 0;
+  // The warm start (lubricated::film_increment_guess): the owned atoms' increments of the step
+  // before the last (x_{n-2}), and how many of the last steps' are known (the solves in a row
+  // at the last step, whose atoms kept their indices).
+  std::vector<double> previous_increment;
+  bigint last_solve_step = -1;
+  int known_increments = 0, last_nlocal = -1;
+  void guess_increments();
   // Solved here first (the pairs', then the walls'), then (newton off) the others' copies.
   std::vector<lubricated::FilmLink> links;
   std::vector<int> link_record;    // each pair link's record

@@ -84,7 +84,7 @@ struct FilmSolveOptions {
   double tolerance = 1e-8;     // relative residual |r|_M / |b|_M
   int max_iterations = 200;    // conjugate-gradient iterations (matrix-vector products)
   FilmPreconditioner preconditioner = FilmPreconditioner::block;
-  bool warm_start = false;    // use the increment passed in as the initial guess (else 0)
+  bool warm_start = false;    // start from the increment passed in, scaled at best (else from 0)
 };
 
 struct FilmSolveResult {
@@ -212,6 +212,22 @@ inline void film_add_block(double *block, const FilmLink &k, double radius, doub
       block[a * 6 + b + 3] += rotation * cross_n[a][b];
       block[(a + 3) * 6 + b] -= rotation * cross_n[a][b];
     }
+}
+
+// The starting guess of a step's increments (warm start) from those of the last steps, solved in
+// a row with the atoms in the same order: `depth` of them are known (0, 1 or 2). increment
+// holds the last step's x_{n-1} (n values) and becomes the guess: 2 x_{n-1} - x_{n-2} (depth 2:
+// the increments change smoothly along a trajectory), x_{n-1} (depth 1) or 0; previous holds
+// x_{n-2} (depth 2) and becomes x_{n-1}. Returns whether there is a guess.
+inline bool film_increment_guess(double *increment, double *previous, int n, int depth)
+{
+  if (depth <= 0) return false;
+  for (int e = 0; e < n; e++) {
+    const double last = increment[e];
+    if (depth >= 2) increment[e] = 2.0 * last - previous[e];
+    previous[e] = last;
+  }
+  return true;
 }
 
 class FilmSolver {
@@ -374,10 +390,17 @@ inline FilmSolveResult FilmSolver::solve(const FilmAtoms &atoms, const FilmLink 
     residual_[e] = dt * (force[e] + accumulated_[e]) * inverse_[e];
   double norms[2] = {local_dot(residual_.data(), residual_.data()), 0.0};
   if (options.warm_start) {
+    // The guess g scaled by the alpha that minimises the error's A-norm along it, <g, b> / <g, Ag>
+    // (mass products): never a worse start than 0, whatever the guess.
     std::copy(increment, increment + n_owned, direction_.begin());
     apply(direction_.data(), product_.data());
-    for (int e = 0; e < n_owned; e++)
-      residual_[e] -= product_[e];
+    double along[2] = {local_dot(direction_.data(), residual_.data()), local_dot(direction_.data(), product_.data())};
+    sum(along, 2);
+    const double alpha = along[1] > 0.0 ? along[0] / along[1] : 0.0;
+    for (int e = 0; e < n_owned; e++) {
+      increment[e] = alpha * direction_[e];
+      residual_[e] -= alpha * product_[e];
+    }
   } else {
     std::fill(increment, increment + n_total, 0.0);
   }

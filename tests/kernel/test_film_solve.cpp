@@ -1,7 +1,7 @@
 // The coupled film solve (lubricated/film_solve.h, doc/film_solve.rst): the backward-Euler step
 // (M + dt R) w' = M w + dt (F + f_wall) of all films against a dense direct solve
 // (film_solve_systems.h), the scalar implicit formula of an isolated pair, the energy identity,
-// zero films, the iteration limit and very stiff films.
+// zero films, the iteration limit, the warm start along a trajectory and very stiff films.
 #include "film_solve_systems.h"
 
 #include <gtest/gtest.h>
@@ -145,6 +145,41 @@ TEST(FilmSolve, IterationLimitIsHonoured)
                                             s.force.data(), x.data(), options);
   EXPECT_TRUE(warm.converged);
   EXPECT_EQ(warm.iterations, 0);
+}
+
+// Steps along a trajectory whose increments change linearly (the force F_n = F_0 + n dF on fixed
+// films, so x_n = x_0 + n dx): started from film_increment_guess, the last step's increment
+// (depth 1) saves iterations and the extrapolation of the last two (depth 2) is exact; every
+// warm-started step reaches the cold solve's answer within the tolerance.
+TEST(FilmSolve, WarmStartFromTheLastStepsSavesIterations)
+{
+  const double dt = 1e-3;
+  System s = random_system(5, 40, 150, 5, dt, 1e3, true);
+  const std::vector<double> force_0 = s.force;
+  FilmSolveOptions options;
+  options.tolerance = 1e-10;
+  options.max_iterations = 2000;
+  const int n = int(s.velocity.size());
+  std::vector<double> x(n), previous(n), cold(n);
+  FilmSolver solver;
+  int known = 0;
+  for (int step = 0; step < 4; step++) {
+    for (int e = 0; e < n; e++)
+      s.force[e] = force_0[e] * (1.0 + 0.01 * step);
+    options.warm_start = false;
+    const FilmSolveResult from_zero = solver.solve(s.atoms(), s.links.data(), int(s.links.size()), dt,
+                                                   s.velocity.data(), s.force.data(), cold.data(), options);
+    options.warm_start = film_increment_guess(x.data(), previous.data(), n, known);
+    EXPECT_EQ(options.warm_start, step > 0);
+    const FilmSolveResult warm = solver.solve(s.atoms(), s.links.data(), int(s.links.size()), dt, s.velocity.data(),
+                                              s.force.data(), x.data(), options);
+    ASSERT_TRUE(from_zero.converged && warm.converged);
+    EXPECT_LT(relative_difference(x, cold), 1e-7) << step;
+    if (known == 1) EXPECT_LT(warm.iterations, from_zero.iterations * 3 / 4) << step;
+    if (known == 2) EXPECT_LT(warm.iterations, from_zero.iterations / 4) << step;
+    std::printf("[ iterations ] step %d: cold %d, warm %d\n", step, from_zero.iterations, warm.iterations);
+    known = std::min(known + 1, 2);
+  }
 }
 
 TEST(FilmSolve, VeryStiffFilmsStayFiniteAndStable)
