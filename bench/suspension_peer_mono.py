@@ -2,7 +2,8 @@
 
     .venv/bin/python bench/suspension_peer_mono.py            # phi 0.40 0.45 0.50, about 20 min
     .venv/bin/python bench/suspension_peer_mono.py --quick    # phi 0.45, squeeze films, 1 min
-    .venv/bin/python bench/suspension_peer_mono.py --gtc 2.5e-4 --peer-steps 2e-4 1e-4   # stiffer contacts
+    .venv/bin/python bench/suspension_peer_mono.py --gtc 2.5e-4 --peer-steps 2e-4 1e-4 \
+        --section suspension-peer-mono-stiff                                       # stiffer contacts
 
 bench/suspension_peer.py shears bidisperse packings (radii a and 1.4 a). There lubricateU/poly's
 film forces are not pairwise (bench/peer_pair_check.py: a lone pair of unequal spheres at the
@@ -85,6 +86,7 @@ def main():
     parser.add_argument("--seed", type=int, default=4928)
     parser.add_argument("--out", default=str(ROOT / "build" / "bench-suspension-peer-mono"))
     parser.add_argument("--results", default=str(bench_common.RESULTS))
+    parser.add_argument("--section", default="suspension-peer-mono", help="the section of --results written")
     args = parser.parse_args()
     peer.GTC = args.gtc
     phis = args.phis or ([0.45] if args.quick else [0.40, 0.45, 0.50])
@@ -114,7 +116,7 @@ def main():
     text = "\n".join(lines)
     print(text)
     if args.results != "none":
-        bench_common.write_section(args.results, "suspension-peer-mono", text)
+        bench_common.write_section(args.results, args.section, text)
 
 
 if __name__ == "__main__":
