@@ -185,7 +185,7 @@ void FilmSolveStep::solve(const Records &records, const double *scale, const Fil
   film_comm.sum = [this](double *values, int count) {
     MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_DOUBLE, MPI_SUM, world);
   };
-  guess_increments();
+  start_from_last_steps();
   const lub::FilmSolveResult result = solver.solve(atoms, links.data(), n_solved, step.kick_time, velocity.data(),
                                                    other_force.data(), increment.data(), options, film_comm);
   iterations = result.iterations, solved = n_solved;
@@ -208,17 +208,25 @@ void FilmSolveStep::solve(const Records &records, const double *scale, const Fil
 
 // Where the last steps were solved in a row and no atom changed its index since (no list build,
 // no set-up), the solve starts from their increments extrapolated (film_solve.h): along a
-// trajectory they change little from step to step, and the iterations fall to a fraction.
-void FilmSolveStep::guess_increments()
+// trajectory they change little from step to step, and the iterations fall to a fraction. The
+// preconditioner's blocks are kept along such a chain too, for blocks_kept_steps.
+void FilmSolveStep::start_from_last_steps()
 {
   const int nlocal = atom->nlocal;
-  const bool in_a_row =
+  // The same on every rank: the start and the blocks decide which communications the solve makes.
+  int here =
       neighbor->ago > 0 && !update->setupflag && update->ntimestep == last_solve_step + 1 && nlocal == last_nlocal;
+  int in_a_row = 0;
+  MPI_Allreduce(&here, &in_a_row, 1, MPI_INT, MPI_MIN, world);
   known_increments = in_a_row ? std::min(known_increments + 1, 2) : 0;
   last_solve_step = update->ntimestep, last_nlocal = nlocal;
   const int n = lub::film_dofs * nlocal;
   if (known_increments == 1) previous_increment.resize(n);
   options.warm_start = lub::film_increment_guess(increment.data(), previous_increment.data(), n, known_increments);
+  // The preconditioner's blocks change with the films as slowly: kept along the same chain of
+  // solves, made again every blocks_kept_steps.
+  options.reuse_blocks = known_increments > 0 && update->ntimestep - blocks_step < blocks_kept_steps;
+  if (!options.reuse_blocks) blocks_step = update->ntimestep;
 }
 
 // Per link: its force at w' (the solved film) in place of the step-exact film the loops applied,

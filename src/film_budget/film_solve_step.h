@@ -57,11 +57,13 @@ class FilmSolveStep : protected Pointers {
   int iterations = 0, solved = 0;
   // The warm start (lubricated::film_increment_guess): the owned atoms' increments of the step
   // before the last (x_{n-2}), and how many of the last steps' are known (the solves in a row
-  // at the last step, whose atoms kept their indices).
+  // at the last step, whose atoms kept their indices); the step whose preconditioner blocks the
+  // solver keeps, for at most blocks_kept_steps along such a chain.
   std::vector<double> previous_increment;
-  bigint last_solve_step = -1;
+  bigint last_solve_step = -1, blocks_step = -1;
+  static constexpr int blocks_kept_steps = 10;
   int known_increments = 0, last_nlocal = -1;
-  void guess_increments();
+  void start_from_last_steps();
   // Solved here first (the pairs', then the walls'), then (newton off) the others' copies.
   std::vector<lubricated::FilmLink> links;
   std::vector<int> link_record;    // each pair link's record

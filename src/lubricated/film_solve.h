@@ -84,6 +84,10 @@ struct FilmSolveOptions {
   double tolerance = 1e-8;     // relative residual |r|_M / |b|_M
   int max_iterations = 200;    // conjugate-gradient iterations (matrix-vector products)
   FilmPreconditioner preconditioner = FilmPreconditioner::block;
+  // Keep the last solve's preconditioner blocks (the same atoms in the same order; any SPD
+  // blocks precondition correctly, older ones less well as the films change) where they were
+  // made for this step and cover every atom with a film.
+  bool reuse_blocks = false;
   bool warm_start = false;    // start from the increment passed in, scaled at best (else from 0)
 };
 
@@ -278,6 +282,14 @@ class FilmSolver {
   }
   void setup_weights();    // weight_ (masses), inverse_, drag_ per component of the owned atoms
   void setup_blocks(bool use_blocks);
+  double blocks_dt_ = 0.0;    // the step the blocks were made for
+  bool blocks_cover_links() const;
+  bool blocks_cover_links_everywhere() const
+  {
+    double missing = blocks_cover_links() ? 0.0 : 1.0;
+    sum(&missing, 1);    // every process makes its blocks again, or none: their set-up communicates
+    return missing == 0.0;
+  }
   void apply(double *p, double *q);
   void precondition(const double *r, double *z) const;
 };
@@ -302,6 +314,7 @@ inline void FilmSolver::setup_blocks(bool use_blocks)
 {
   const int owned = atoms_->owned, total = atoms_->total;
   has_block_.assign(owned, 0);
+  blocks_dt_ = dt_;
   if (!use_blocks) return;
   accumulated_.assign(36 * total, 0.0);    // R_ii of every atom, then summed to the owners
   for (int k = 0; k < n_links_; k++) {
@@ -343,6 +356,19 @@ inline void FilmSolver::setup_blocks(bool use_blocks)
   }
 }
 
+// Whether the kept blocks can precondition this solve: made for this step and these atoms, and
+// every owned atom of a film has one (an atom whose films joined the solve since has none).
+inline bool FilmSolver::blocks_cover_links() const
+{
+  const int owned = atoms_->owned;
+  if (static_cast<int>(has_block_.size()) != owned || blocks_dt_ != dt_) return false;
+  for (int k = 0; k < n_links_; k++) {
+    const FilmLink &l = links_[k];
+    if ((l.i < owned && !has_block_[l.i]) || (l.j >= 0 && l.j < owned && !has_block_[l.j])) return false;
+  }
+  return true;
+}
+
 // q = A p = p + dt M^-1 (R p + drag p) on owned atoms; p's ghost entries are filled here.
 inline void FilmSolver::apply(double *p, double *q)
 {
@@ -379,7 +405,8 @@ inline FilmSolveResult FilmSolver::solve(const FilmAtoms &atoms, const FilmLink 
   atoms_ = &atoms, links_ = links, n_links_ = n_links, dt_ = dt, comm_ = &comm;
   const int n_owned = film_dofs * atoms.owned, n_total = film_dofs * atoms.total;
   setup_weights();
-  setup_blocks(options.preconditioner == FilmPreconditioner::block);
+  const bool use_blocks = options.preconditioner == FilmPreconditioner::block;
+  if (!(use_blocks && options.reuse_blocks && blocks_cover_links_everywhere())) setup_blocks(use_blocks);
   for (auto *v : {&residual_, &preconditioned_, &direction_, &product_, &accumulated_})
     v->assign(n_total, 0.0);
 
