@@ -3,7 +3,7 @@
     .venv/bin/python bench/suspension_peer_mono.py            # phi 0.40 0.45 0.50, about 20 min
     .venv/bin/python bench/suspension_peer_mono.py --quick    # phi 0.45, squeeze films, 1 min
     .venv/bin/python bench/suspension_peer_mono.py --gtc 2.5e-4 --peer-steps 2e-4 1e-4 \
-        --section suspension-peer-mono-stiff                                       # stiffer contacts
+        --plugin-nc 4 8 16 --section suspension-peer-mono-stiff                    # stiffer contacts
 
 bench/suspension_peer.py shears bidisperse packings (radii a and 1.4 a). There lubricateU/poly's
 film forces are not pairwise (bench/peer_pair_check.py: a lone pair of unequal spheres at the
@@ -21,7 +21,7 @@ same contacts and cutoffs), for two sets of films:
            (flaglog 1): the peer adds the log part of the squeeze film and the pump term (the
            films' torque against the relative spin), which the plugin has not.
 
-Arms: the plugin at N_c 8 and 16, the peer at gdot dt 5e-4 and 2.5e-4 (--peer-steps; and at
+Arms: the plugin at N_c 8 and 16 (--plugin-nc), the peer at gdot dt 5e-4 and 2.5e-4 (--peer-steps; and at
 twice the first with a short time-out); --gtc sets both engines' contact duration (gdot t_c,
 default 1e-3; examples/suspension_shear uses 2.5e-4, where the contacts no longer set the
 stress). The verdict lines give eta_s plugin / peer of the finest arms and the cost per unit
@@ -47,9 +47,9 @@ ENGINES = {"full": (peer.PLUGIN_ENGINE, peer.PEER_ENGINE),
                        peer.PEER_ENGINE.replace("{eta} 1 {cin_global}", "{eta} 0 {cin_global}"))}
 
 
-def arms(quick, peer_steps):
-    """The plugin at N_c 8 and 16; the peer at the given gdot dt (the first only with quick)."""
-    plugin = [("plugin", peer.GTC / peer.GDOT / c) for c in (8, 16)]
+def arms(quick, peer_steps, plugin_nc=(8, 16)):
+    """The plugin at the given N_c; the peer at the given gdot dt (the first only with quick)."""
+    plugin = [("plugin", peer.GTC / peer.GDOT / c) for c in plugin_nc]
     return plugin + [("peer", g / peer.GDOT) for g in (peer_steps[:1] if quick else peer_steps)]
 
 
@@ -58,7 +58,7 @@ def run_films(films, work, phi, strain, args):
     peer.PLUGIN_ENGINE, peer.PEER_ENGINE = ENGINES[films]
     rows = []
     probe = [] if args.quick else [("peer", 2 * args.peer_steps[0] / peer.GDOT)]
-    todo = arms(args.quick, args.peer_steps) + probe
+    todo = arms(args.quick, args.peer_steps, args.plugin_nc) + probe
     for engine, dt in todo:
         timeout = args.probe_timeout if (engine, dt) in probe else args.timeout
         row = peer.shear(work, engine, dt, strain, args.friction, phi, timeout)
@@ -87,6 +87,7 @@ def main():
     parser.add_argument("--out", default=str(ROOT / "build" / "bench-suspension-peer-mono"))
     parser.add_argument("--results", default=str(bench_common.RESULTS))
     parser.add_argument("--section", default="suspension-peer-mono", help="the section of --results written")
+    parser.add_argument("--plugin-nc", type=float, nargs="+", default=[8, 16], help="the plugin's arms (N_c)")
     args = parser.parse_args()
     peer.GTC = args.gtc
     phis = args.phis or ([0.45] if args.quick else [0.40, 0.45, 0.50])
