@@ -59,12 +59,22 @@ void FilmBudget::grow_atoms()
   }
 }
 
+bool FilmBudget::bounds_due() const
+{
+  return neighbor->ago == 0 || update->setupflag || update->dt > bound_dt;
+}
+
+bool FilmBudget::may_be_active() const
+{
+  return enabled && (now || bounds_due());
+}
+
 void FilmBudget::begin_step(const NeighList *list, const TypeTables &tables)
 {
   this->tables = tables;
   if (!enabled)
     now = false;
-  else if (neighbor->ago == 0 || update->setupflag || update->dt > bound_dt)
+  else if (bounds_due())
     // The bounds grow with dt (lubricated/film_budget.h): those of a larger step hold for a
     // smaller one, so adaptive time stepping recomputes them only where dt grows past theirs.
     now = films_can_exceed_budget(list, tables);

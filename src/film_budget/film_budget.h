@@ -58,6 +58,9 @@ class FilmBudget : protected Pointers {
   // This step's: whether the films can exceed any atom's budget (else nothing is recorded or
   // scaled), and an owned atom's film scale once finish() computed it.
   bool active() const { return now; }
+  // Before begin_step (a participant's pre_force): whether this step can be active(): it was at
+  // the last step, or the bounds are made again now (begin_step).
+  bool may_be_active() const;
   double scale(int i) const { return now ? scale_of_atom[i] : 1.0; }
   bool records_shear() const { return shear_records; }
 
@@ -153,6 +156,7 @@ class FilmBudget : protected Pointers {
   bool now = false;
   double bound_dt = 0.0;    // the time step the bounds were computed for
   void grow_atoms();
+  bool bounds_due() const;
   bool films_can_exceed_budget(const class NeighList *list, const TypeTables &tables);
   template <class BoundOf> bool sum_bounds_can_exceed(const class NeighList *list, BoundOf &&bound_of);
   void scale_films(Tally *tally);

@@ -48,7 +48,8 @@ void FixWallLubricationBase::begin_evaluation(bool defer_films)
   clear_sums();
   films_pending = pass.defer_films = defer_films && model.normal.lubrication.active();
   shear_pending = pass.defer_films && model.tangential.film_active();
-  links_pending = pass.defer_films && pair_budget && pair_budget->solves();
+  // The links of the coupled solve, where it can be taken this step.
+  links_pending = pass.defer_films && pair_budget && pair_budget->solves() && pair_budget->may_be_active();
   clear_films();
   pass.kick_time = kind.kick_time;
 
