@@ -18,8 +18,9 @@ namespace LAMMPS_NS {
 class ImplicitDragParticipant {
  public:
   // Whether this step's drag can be solved with the films (linear in v, known before the pair
-  // style evaluates).
-  virtual bool drag_is_implicit() const = 0;
+  // style evaluates); called on every rank at each solve, it may prepare the step's drag (a
+  // collective solid fraction).
+  virtual bool drag_is_implicit() = 0;
   // Owned atom i at velocity v and spin omega: drag coefficient c, the fluid velocity u_f,
   // rotational coefficient c_r and fluid rotation Omega_f (all 0 for an atom the fix does not act on).
   virtual void linear_drag(int i, const double *v, double &drag, double *fluid_velocity, double &rotational_drag,

@@ -47,7 +47,7 @@ class FixFluidDrag : public Fix, public ImplicitDragParticipant {
 
   // The drag and torque taken implicitly by the pair style's coupled film solve
   // (film_budget/implicit_drag.h; fix_fluid_drag_force.cpp).
-  bool drag_is_implicit() const override;
+  bool drag_is_implicit() override;
   void linear_drag(int i, const double *v, double &drag, double *fluid_velocity, double &rotational_drag,
                    double *fluid_spin) override;
   void take_increments(const double *increments, int nlocal, bigint step) override;
@@ -125,6 +125,7 @@ class FixFluidDrag : public Fix, public ImplicitDragParticipant {
   void parse(int narg, char **arg);
   void check_keywords();
   bool needs_fraction() const;
+  void refresh_solid_fraction();    // this step's phi, where due (at multiples of every) and not yet made
   bool fluid_inertia() const { return added_mass > 0.0 || pressure || history || magnus || saffman; }
   bool solves_acceleration() const { return added_mass > 0.0 || history; }
   void check_last_force_fix();

@@ -21,9 +21,7 @@ namespace lub = lubricated;
 void FixFluidDrag::post_force(int vflag)
 {
   v_init(vflag);    // the virial, where fix_modify virial yes asks for it
-  // At multiples of every (LAMMPS's convention), so that split runs and restarts see the
-  // same phi as one run; in between, the last one, also from the last run or a restart file.
-  if (needs_fraction() && (last_fraction_step < 0 || update->ntimestep % every == 0)) update_solid_fraction();
+  refresh_solid_fraction();
 
   // Fluid velocity and acceleration: constants, equal-style or atom-style variables.
   evaluate(velocity, atom_velocity);
@@ -55,16 +53,28 @@ void FixFluidDrag::post_force(int vflag)
   }
 }
 
+// At multiples of every (LAMMPS's convention), so that split runs and restarts see the same phi
+// as one run; in between, the last one, also from the last run or a restart file. Once a step:
+// the film solve may have made it already (drag_is_implicit). The positions do not change
+// between the pair style and the fixes' forces.
+void FixFluidDrag::refresh_solid_fraction()
+{
+  if (!needs_fraction() || last_fraction_step == update->ntimestep) return;
+  if (last_fraction_step < 0 || update->ntimestep % every == 0) update_solid_fraction();
+}
+
 // The coupled film solve may take the drag where it is linear in v and known before the pair
-// style evaluates: no fluid inertia, no solid fraction (bins), no fluid velocity or vorticity
-// from variables (evaluated after the pair style), and not at a set-up unless it continues the
-// last run's steps (fix_step_velocity.h: it then evaluates as the last step did).
-bool FixFluidDrag::drag_is_implicit() const
+// style evaluates: no fluid inertia, no fluid velocity or vorticity from variables (evaluated
+// after the pair style), and not at a set-up unless it continues the last run's steps
+// (fix_step_velocity.h: it then evaluates as the last step did). The solid fraction of bins is
+// made here for the step, before the solve reads it.
+bool FixFluidDrag::drag_is_implicit()
 {
   const bool continued = step_velocity && step_velocity->continues();
-  if ((update->setupflag && !continued) || fluid_inertia() || needs_fraction()) return false;
+  if ((update->setupflag && !continued) || fluid_inertia()) return false;
   for (int d = 0; d < 3; d++)
     if (!velocity[d].name.empty() || (rotation && !vorticity[d].name.empty())) return false;
+  refresh_solid_fraction();
   return true;
 }
 
