@@ -155,7 +155,9 @@ double FixWallLubricationBase::memory_usage()
 {
   return film_atom.capacity() * sizeof(int) +
          (film_force.capacity() + film_load.capacity() + shear_film.capacity() + inverse_mass.capacity()) *
-             sizeof(double);
+             sizeof(double) +
+         film_link.capacity() * sizeof(lub::FilmLink) + (link_entry.capacity() + solved_link.capacity()) * sizeof(int) +
+         entry_solved.capacity();
 }
 
 void FixWallLubricationBase::clear_films()
