@@ -43,8 +43,8 @@ class FixWallLubricationBase : public Fix, public FilmBudgetParticipant, public 
   // (force of the walls on the group, and the region's torque), summed over the ranks once.
   double compute_scalar() override;
   double compute_vector(int) override;
-  double
-  memory_usage() override;    // the deferred films, their links and the contact masses; walls add their histories
+  // The deferred films, their links and the contact masses; walls add their histories.
+  double memory_usage() override;
 
   bool wet() const override { return coeffs.wet(); }
   // Adds this step's wall-film shares to the owned atoms' loads of the many-body film budget
