@@ -126,6 +126,10 @@ class FixFluidDrag : public Fix, public ImplicitDragParticipant {
   void check_keywords();
   bool needs_fraction() const;
   void refresh_solid_fraction();    // this step's phi, where due (at multiples of every) and not yet made
+  // The fluid's velocity, acceleration and vorticity of this step (constants or variables), once
+  // a step (again at a set-up: the variables may have changed between runs).
+  bigint fluid_fields_step = -1;
+  void evaluate_fluid_fields();
   bool fluid_inertia() const { return added_mass > 0.0 || pressure || history || magnus || saffman; }
   bool solves_acceleration() const { return added_mass > 0.0 || history; }
   void check_last_force_fix();

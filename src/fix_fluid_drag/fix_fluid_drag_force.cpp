@@ -23,10 +23,7 @@ void FixFluidDrag::post_force(int vflag)
   v_init(vflag);    // the virial, where fix_modify virial yes asks for it
   refresh_solid_fraction();
 
-  // Fluid velocity and acceleration: constants, equal-style or atom-style variables.
-  evaluate(velocity, atom_velocity);
-  if (fluid_inertia()) evaluate(acceleration, atom_acceleration);
-  if (magnus || saffman || rotation) evaluate(vorticity, atom_vorticity);
+  evaluate_fluid_fields();
   if (history) weigh_history_steps();
 
   // A set-up that continues the last run drags with the velocities of its last step, as that
@@ -63,18 +60,26 @@ void FixFluidDrag::refresh_solid_fraction()
   if (last_fraction_step < 0 || update->ntimestep % every == 0) update_solid_fraction();
 }
 
-// The coupled film solve may take the drag where it is linear in v and known before the pair
-// style evaluates: no fluid inertia, no fluid velocity or vorticity from variables (evaluated
-// after the pair style), and not at a set-up unless it continues the last run's steps
-// (fix_step_velocity.h: it then evaluates as the last step did). The solid fraction of bins is
-// made here for the step, before the solve reads it.
+// Fluid velocity, acceleration and vorticity: constants, equal-style or atom-style variables.
+void FixFluidDrag::evaluate_fluid_fields()
+{
+  if (fluid_fields_step == update->ntimestep && !update->setupflag) return;
+  evaluate(velocity, atom_velocity);
+  if (fluid_inertia()) evaluate(acceleration, atom_acceleration);
+  if (magnus || saffman || rotation) evaluate(vorticity, atom_vorticity);
+  fluid_fields_step = update->ntimestep;
+}
+
+// The coupled film solve may take the drag where it is linear in v: no fluid inertia, and not
+// at a set-up unless it continues the last run's steps (fix_step_velocity.h: it then evaluates
+// as the last step did). The step's solid fraction (bins) and fluid velocity and vorticity
+// (variables) are made here, before the solve reads them, and kept for post_force.
 bool FixFluidDrag::drag_is_implicit()
 {
   const bool continued = step_velocity && step_velocity->continues();
   if ((update->setupflag && !continued) || fluid_inertia()) return false;
-  for (int d = 0; d < 3; d++)
-    if (!velocity[d].name.empty() || (rotation && !vorticity[d].name.empty())) return false;
   refresh_solid_fraction();
+  evaluate_fluid_fields();
   return true;
 }
 
