@@ -202,8 +202,8 @@ void FilmSolveStep::solve(const Records &records, const double *scale, const Fil
   // w' = w + x on owned and ghost atoms (the solver forwarded x).
   for (int e = 0; e < lub::film_dofs * nall; e++)
     velocity[e] += increment[e];
-  apply_solved_films(records, tally);
-  apply_solved_wall_films();
+  apply_solved_films(records, atoms, tally);
+  apply_solved_wall_films(atoms);
 }
 
 // Where the last steps were solved in a row and no atom changed its index since (no list build,
@@ -232,11 +232,8 @@ void FilmSolveStep::start_from_last_steps()
 // Per link: its force at w' (the solved film) in place of the step-exact film the loops applied,
 // on i and j (Newton's third law, as the pair loops apply it: on j where newton is on or j is
 // owned), with torques -R n x F_t and the rolling film's, and tallied.
-void FilmSolveStep::apply_solved_films(const Records &records, FilmBudget::Tally *tally)
+void FilmSolveStep::apply_solved_films(const Records &records, const lub::FilmAtoms &atoms, FilmBudget::Tally *tally)
 {
-  lub::FilmAtoms atoms;
-  atoms.owned = atom->nlocal, atoms.total = atom->nlocal + atom->nghost;
-  atoms.radius = atom->radius;
   const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
   double **x = atom->x, **f = atom->f, **torque = atom->torque;
   const double *radius = atom->radius;
@@ -269,11 +266,8 @@ void FilmSolveStep::apply_solved_films(const Records &records, FilmBudget::Tally
 
 // Per wall link: its force and torque on the atom at w' (the wall's velocity counted), handed to
 // its fix, which applies them in place of its step-exact films (and tallies them).
-void FilmSolveStep::apply_solved_wall_films()
+void FilmSolveStep::apply_solved_wall_films(const lub::FilmAtoms &atoms)
 {
-  lub::FilmAtoms atoms;
-  atoms.owned = atom->nlocal, atoms.total = atom->nlocal + atom->nghost;
-  atoms.radius = atom->radius;
   for (const WallLinks &range : wall_links) {
     wall_solved.resize(range.count);
     for (int k = 0; k < range.count; k++)
@@ -287,5 +281,6 @@ double FilmSolveStep::memory_usage() const
   return links.capacity() * sizeof(lub::FilmLink) + link_record.capacity() * sizeof(int) +
          (inverse_mass.capacity() + inverse_inertia.capacity() + velocity.capacity() + other_force.capacity() +
           increment.capacity() + previous_increment.capacity()) *
-             sizeof(double);
+             sizeof(double) +
+         wall_solved.capacity() * sizeof(lub::FilmLinkForce);
 }

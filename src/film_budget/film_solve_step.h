@@ -75,7 +75,7 @@ class FilmSolveStep : protected Pointers {
   std::vector<WallLinks> wall_links;
   std::vector<lubricated::FilmLinkForce> wall_solved;
   int collect_wall_links(const double *scale);
-  void apply_solved_wall_films();
+  void apply_solved_wall_films(const lubricated::FilmAtoms &atoms);
   std::vector<double> inverse_mass, inverse_inertia, velocity, other_force, increment;
   ImplicitDragParticipant *drag_fix = nullptr;
   std::vector<double> drag, rotational_drag;    // per owned atom, where drag_fix acts this step
@@ -83,7 +83,7 @@ class FilmSolveStep : protected Pointers {
   int collect_links(const Records &records, const double *scale, const FilmBudget::TypeTables &tables);
   void gather_atoms(const FilmBudget::StepInputs &step);
   void gather_other_forces(const Records &records);
-  void apply_solved_films(const Records &records, FilmBudget::Tally *tally);
+  void apply_solved_films(const Records &records, const lubricated::FilmAtoms &atoms, FilmBudget::Tally *tally);
 };
 
 }    // namespace LAMMPS_NS
