@@ -148,7 +148,8 @@ void FilmSolveStep::start_run(const std::vector<FilmBudgetParticipant *> &partic
     drag_fix = dynamic_cast<ImplicitDragParticipant *>(modify->fix[k]);
 }
 
-// The drag of drag_fix on the owned atoms into F (at w) and into the matrix (implicit_drag.h).
+// The drag of drag_fix on the owned atoms into F (at w) and into the matrix (implicit_drag.h),
+// and the inertia that fix solves for beyond the contact mass into the atoms' masses.
 bool FilmSolveStep::add_implicit_drag()
 {
   if (!drag_fix || !drag_fix->drag_is_implicit()) return false;
@@ -156,12 +157,13 @@ bool FilmSolveStep::add_implicit_drag()
   drag.assign(nlocal, 0.0), rotational_drag.assign(nlocal, 0.0);
   for (int k = 0; k < nlocal; k++) {
     double *w = &velocity[lub::film_dofs * k], *f = &other_force[lub::film_dofs * k];
-    double u[3], spin[3];
-    drag_fix->linear_drag(k, w, drag[k], u, rotational_drag[k], spin);
-    for (int d = 0; d < 3; d++) {
-      f[d] += drag[k] * (u[d] - w[d]);
-      f[3 + d] += rotational_drag[k] * (spin[d] - w[3 + d]);
+    const ImplicitDragParticipant::LinearDrag d = drag_fix->linear_drag(k, w);
+    drag[k] = d.drag, rotational_drag[k] = d.rotational_drag;
+    for (int c = 0; c < 3; c++) {
+      f[c] += d.drag * (d.fluid_velocity[c] - w[c]);
+      f[3 + c] += d.rotational_drag * (d.fluid_spin[c] - w[3 + c]);
     }
+    if (d.solved_mass > 0.0 && inverse_mass[k] > 0.0) inverse_mass[k] = 1.0 / (1.0 / inverse_mass[k] + d.solved_mass);
   }
   return true;
 }

@@ -48,8 +48,7 @@ class FixFluidDrag : public Fix, public ImplicitDragParticipant {
   // The drag and torque taken implicitly by the pair style's coupled film solve
   // (film_budget/implicit_drag.h; fix_fluid_drag_force.cpp).
   bool drag_is_implicit() override;
-  void linear_drag(int i, const double *v, double &drag, double *fluid_velocity, double &rotational_drag,
-                   double *fluid_spin) override;
+  LinearDrag linear_drag(int i, const double *v) override;
   void take_increments(const double *increments, int nlocal, bigint step) override;
 
   // the Basset history per atom (fix_fluid_drag_history.cpp)
@@ -147,7 +146,7 @@ class FixFluidDrag : public Fix, public ImplicitDragParticipant {
   };
   Slip slip_at(int i, const double *v) const;
   void apply_drag(int i, const Slip &s, const double *solved);
-  void apply_with_inertia(int i, const Slip &s, const double *omega);
+  void apply_with_inertia(int i, const Slip &s, const double *omega, const double *solved);
   double history_force(int i, const Slip &s, double *known);
   void near_wall_added_mass(int i, const Slip &s, double m_a, double *axis_mass, double *wall_force) const;
   void lift_force(int i, const Slip &s, const double *omega, double *lift) const;

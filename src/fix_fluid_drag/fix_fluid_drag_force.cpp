@@ -43,7 +43,7 @@ void FixFluidDrag::post_force(int vflag)
     const Slip slip = slip_at(i, v[i]);
     const double *x = solved ? solved + 6 * i : nullptr;
     if (fluid_inertia())
-      apply_with_inertia(i, slip, omega[i]);
+      apply_with_inertia(i, slip, omega[i], x);
     else
       apply_drag(i, slip, x);
     if (rotation) apply_rotation(i, omega[i], x ? x + 3 : nullptr);
@@ -70,36 +70,39 @@ void FixFluidDrag::evaluate_fluid_fields()
   fluid_fields_step = update->ntimestep;
 }
 
-// The coupled film solve may take the drag where it is linear in v: no fluid inertia, and not
-// at a set-up unless it continues the last run's steps (fix_step_velocity.h: it then evaluates
-// as the last step did). The step's solid fraction (bins) and fluid velocity and vorticity
-// (variables) are made here, before the solve reads them, and kept for post_force.
+// The coupled film solve may take the drag (linear in v), not at a set-up unless it continues the
+// last run's steps (fix_step_velocity.h: it then evaluates as the last step did), and not where
+// the added mass grows near walls (a mass per axis). With the fluid's inertia the solve moves the
+// mass this fix solves for. The step's solid fraction (bins) and fluid velocity and vorticity
+// (variables) and the history's weights are made here, before the solve reads them, and kept
+// for post_force.
 bool FixFluidDrag::drag_is_implicit()
 {
   const bool continued = step_velocity && step_velocity->continues();
-  if ((update->setupflag && !continued) || fluid_inertia()) return false;
+  if ((update->setupflag && !continued) || !added_mass_walls.empty()) return false;
   refresh_solid_fraction();
   evaluate_fluid_fields();
+  if (history) weigh_history_steps();    // this step's weights, for the mass the solve moves
   return true;
 }
 
-void FixFluidDrag::linear_drag(int i, const double *v, double &drag, double *fluid_velocity, double &rotational_drag,
-                               double *fluid_spin)
+FixFluidDrag::LinearDrag FixFluidDrag::linear_drag(int i, const double *v)
 {
-  drag = rotational_drag = 0.0;
-  for (int d = 0; d < 3; d++)
-    fluid_velocity[d] = fluid_spin[d] = 0.0;
-  if (!(atom->mask[i] & groupbit)) return;
+  LinearDrag d;
+  if (!(atom->mask[i] & groupbit)) return d;
   const Slip s = slip_at(i, v);
-  drag = s.beta;
-  for (int d = 0; d < 3; d++)
-    fluid_velocity[d] = s.w[d] + v[d];
-  if (!rotation) return;
-  rotational_drag = lub::rotational_drag_coefficient(atom->radius[i], model.viscosity);
+  d.drag = s.beta;
+  for (int c = 0; c < 3; c++)
+    d.fluid_velocity[c] = s.w[c] + v[c];
+  double known[3];
+  if (history) d.solved_mass = history_force(i, s, known);    // the added mass is in the contact mass
+  if (!rotation) return d;
+  d.rotational_drag = lub::rotational_drag_coefficient(atom->radius[i], model.viscosity);
   double curl[3];
   fluid_vorticity(i, curl);
-  for (int d = 0; d < 3; d++)
-    fluid_spin[d] = 0.5 * curl[d];
+  for (int c = 0; c < 3; c++)
+    d.fluid_spin[c] = 0.5 * curl[c];
+  return d;
 }
 
 void FixFluidDrag::take_increments(const double *increments, int nlocal, bigint step)
@@ -156,8 +159,9 @@ void FixFluidDrag::apply_drag(int i, const Slip &s, const double *solved)
 }
 
 // Maxey-Riley-Gatignol (fluid_inertia.h): added mass m_a and the history's current step m_h
-// are solved for with the total force F, (m + m_a + m_h) a = F + (m_a + m_h) Du/Dt + H.
-void FixFluidDrag::apply_with_inertia(int i, const Slip &s, const double *omega)
+// are solved for with the total force F, (m + m_a + m_h) a = F + (m_a + m_h) Du/Dt + H. Where the
+// film solve took the drag (solved: atom i's increment x), the drag at w + x, uncapped.
+void FixFluidDrag::apply_with_inertia(int i, const Slip &s, const double *omega, const double *solved)
 {
   double fluid_accel[3];
   for (int d = 0; d < 3; d++)
@@ -168,13 +172,14 @@ void FixFluidDrag::apply_with_inertia(int i, const Slip &s, const double *omega)
   double axis_mass[3] = {m_a, m_a, m_a}, wall_force[3] = {0.0, 0.0, 0.0};
   if (!added_mass_walls.empty()) near_wall_added_mass(i, s, m_a, axis_mass, wall_force);
   const double m_eff = atom->rmass[i] + std::min(axis_mass[0], std::min(axis_mass[1], axis_mass[2])) + m_h;
-  const double beta = std::min(s.beta, m_eff / update->dt);    // the cap of apply_drag, for this mass
+  const double beta = solved ? s.beta : std::min(s.beta, m_eff / update->dt);    // apply_drag's cap, for this mass
   double lift[3] = {0.0, 0.0, 0.0};
   if (magnus || saffman) lift_force(i, s, omega, lift);
   const double undisturbed = pressure ? s.buoyant_volume : 0.0;
   double fluid[3];
   for (int d = 0; d < 3; d++)
-    fluid[d] = beta * s.w[d] - s.buoyant_volume * gravity[d] + undisturbed * fluid_accel[d] + lift[d] + wall_force[d];
+    fluid[d] = beta * (s.w[d] - (solved ? solved[d] : 0.0)) - s.buoyant_volume * gravity[d] +
+               undisturbed * fluid_accel[d] + lift[d] + wall_force[d];
   if (!solves_acceleration()) {
     for (int d = 0; d < 3; d++)
       atom->f[i][d] += fluid[d];
