@@ -309,6 +309,11 @@ int FilmBudget::solved_films() const
   return solve_step->last_solved_films();
 }
 
+lubricated::SolvedFilms FilmBudget::solved_now() const
+{
+  return solve_step->solved_at(update->ntimestep);
+}
+
 double FilmBudget::memory_usage() const
 {
   return solve_step->memory_usage() + (record_i.capacity() + record_j.capacity()) * sizeof(int) +

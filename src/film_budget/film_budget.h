@@ -20,6 +20,10 @@
 #include <memory>
 #include <vector>
 
+namespace lubricated {
+struct SolvedFilms;
+}
+
 namespace LAMMPS_NS {
 
 // `limit implicit` (film_solve_step.h): the films of atoms over budget solved together.
@@ -136,6 +140,8 @@ class FilmBudget : protected Pointers {
   // The coupled solve of this evaluation: its iterations and this rank's solved films (0: none).
   int solve_iterations() const;
   int solved_films() const;
+  // What the solve taken at this step took (film_solve_step.h; nothing where none was).
+  lubricated::SolvedFilms solved_now() const;
 
   double memory_usage() const;
 

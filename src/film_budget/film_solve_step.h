@@ -33,6 +33,8 @@ class FilmSolveStep : protected Pointers {
   void clear_counts() { iterations = 0, solved = 0; }
   int last_iterations() const { return iterations; }
   int last_solved_films() const { return solved; }    // this rank's
+  // What the solve taken at this step took (lubricated::SolvedFilms; nothing where none was).
+  lubricated::SolvedFilms solved_at(bigint step) const;
 
   // The pair loops' records of this step (FilmBudget's): i, j, the film along n, and with shear
   // films the shear film's force on i (3 per record, else nullptr).
@@ -78,6 +80,7 @@ class FilmSolveStep : protected Pointers {
   void apply_solved_wall_films(const lubricated::FilmAtoms &atoms);
   std::vector<double> inverse_mass, inverse_inertia, velocity, other_force, increment;
   ImplicitDragParticipant *drag_fix = nullptr;
+  bool drag_solved = false;                     // the last solve took the drag
   std::vector<double> drag, rotational_drag;    // per owned atom, where drag_fix acts this step
   bool add_implicit_drag();
   int collect_links(const Records &records, const double *scale, const FilmBudget::TypeTables &tables);

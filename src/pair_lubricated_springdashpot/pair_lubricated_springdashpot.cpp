@@ -275,6 +275,7 @@ void PairLubricatedSpringDashpot::compute(int eflag, int vflag)
       vectorised ? eval<false, false, true>() : eval<false, false>();
   }
   finish_film_budget();
+  check_network();
   pvector[0] = static_cast<double>(selected_pairs);
   pvector[1] = static_cast<double>(film_only_pairs);
   // compute pair sums over ranks: the iterations (the same on every rank) counted once.
@@ -296,6 +297,17 @@ void PairLubricatedSpringDashpot::finish_film_budget()
                                     continued ? step_velocity->spin() : atom->omega,
                                     lub::film_kick_time(update->dt, update->setupflag && !continued, false), inverse};
   budget.finish(inverse, evflag ? this : nullptr, &step);
+}
+
+// The contact-network check of this step, if due, once the films are final: a contact whose own
+// film the coupled solve took counts with the relieved load (contact_network.h).
+void PairLubricatedSpringDashpot::check_network()
+{
+  if (network_candidates < 0) return;
+  const int n = network_candidates;
+  network_candidates = -1;
+  network.check({loop_lists.candidate_i.data(), loop_lists.candidate_j.data(), n,
+                 inverse_mass_on ? inverse_mass.data() : nullptr, midpoint, coeffs.data(), budget.solved_now()});
 }
 
 double PairLubricatedSpringDashpot::single(int i, int j, int itype, int jtype, double rsq, double /*factor_coul*/,

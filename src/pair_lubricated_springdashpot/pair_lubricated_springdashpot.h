@@ -108,6 +108,7 @@ class PairLubricatedSpringDashpot : public Pair, public FilmBudgetOwner, private
   void set_comm_sizes();
   void parse_film_solve_keyword(const std::string &key, const std::string &value);
   void finish_film_budget();
+  void check_network();
   FilmBudget budget;
   void tally_film_correction(int i, int j, double fpair, double delx, double dely, double delz) override;
   void tally_film_correction_xyz(int i, int j, double fx, double fy, double fz, double delx, double dely,
@@ -122,6 +123,7 @@ class PairLubricatedSpringDashpot : public Pair, public FilmBudgetOwner, private
   void update_inverse_mass();
   // Stability of the network of sustained contacts (contact_network/contact_network_check.h).
   ContactNetworkCheck network;
+  int network_candidates = -1;    // the candidates the check reads this step (-1: not due)
 
   // init_style's steps (pair_lubricated_springdashpot_init.cpp).
   void check_atom_style();

@@ -380,7 +380,7 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
   double **v = continued ? step_velocity->velocity() : atom->v;
   update_step_reach(v);
   // The contact-network check reads the step's candidates at once: on its steps pass 1 selects
-  // the whole list in one piece.
+  // the whole list in one piece, which stays for check_network.
   const bool network_due = network.due();
   const int limit = network_due ? std::numeric_limits<int>::max() : pairs_per_piece;
   if (WET)
@@ -400,10 +400,8 @@ template <bool WET, bool TANGENTIAL, bool SPLIT> void PairLubricatedSpringDashpo
                                               : select_pairs<WET, TANGENTIAL, SPLIT, false>(next, nfilm, limit);
     selected_pairs += ncandidate + (SPLIT ? nfilm : 0);
     film_only_pairs += nfilm;
-    if (!SPLIT) nfilm = 0;    // counted only: no film-only list
-    if (network_due)
-      network.check({loop_lists.candidate_i.data(), loop_lists.candidate_j.data(), ncandidate,
-                     inverse_mass_on ? inverse_mass.data() : nullptr, midpoint, coeffs.data()});
+    if (!SPLIT) nfilm = 0;                               // counted only: no film-only list
+    if (network_due) network_candidates = ncandidate;    // checked after the films (check_network)
     if (overlap_check_due && !overlap_deep_warned && any_deep_overlap(ncandidate)) check_pair_overlaps(ncandidate);
     if (loop.budget) budget.reserve_records(ncandidate + nfilm);
     if constexpr (SPLIT && !TANGENTIAL) {
