@@ -176,8 +176,12 @@ TEST(FilmSolve, WarmStartFromTheLastStepsSavesIterations)
                                               s.force.data(), x.data(), options);
     ASSERT_TRUE(from_zero.converged && warm.converged);
     EXPECT_LT(relative_difference(x, cold), 1e-7) << step;
-    if (known == 1) EXPECT_LT(warm.iterations, from_zero.iterations * 3 / 4) << step;
-    if (known == 2) EXPECT_LT(warm.iterations, from_zero.iterations / 4) << step;
+    if (known == 1) {
+      EXPECT_LT(warm.iterations, from_zero.iterations * 3 / 4) << step;
+    }
+    if (known == 2) {
+      EXPECT_LT(warm.iterations, from_zero.iterations / 4) << step;
+    }
     std::printf("[ iterations ] step %d: cold %d, warm %d\n", step, from_zero.iterations, warm.iterations);
     known = std::min(known + 1, 2);
   }
