@@ -7,7 +7,7 @@ Reads the stored data of bench/suspension_convergence.py (tests/data/suspension_
 bench/data/suspension_convergence.csv; no runs) and writes suspension_convergence.png and the
 table suspension_convergence.md to --out:
 for the film budget (limit atom) and the coupled solve (limit implicit), one line each over
-N_c = 4, 8, 16, 32, the root-mean-square over the solid fractions and frictions of the relative
+N_c = 1 (the solve) or 4 (the budget) to 32, the root-mean-square over the solid fractions and frictions of the relative
 deviation of eta_s (left) and of the particle pressure P (right) from the reference, against
 the LAMMPS loop time per run (one strain unit of 64 spheres). The grey band is the reference's
 own statistical error (its standard error, root-mean-square over the cases): deviations inside
