@@ -103,7 +103,7 @@ void ContactNetworkCheck::check(const Pairs &pairs)
   constexpr int nv = lub::network_values;
   if (static_cast<int>(sums.size()) < nv * nall) sums.resize(nv * atom->nmax);
   std::fill(sums.begin(), sums.begin() + nv * nall, 0.0);
-  sum_solved_films(pairs);
+  find_solved_films(pairs);
   sum_pair_contacts(pairs);
   if (force->newton_pair) exchange.reverse(sums.data(), nv);
   sum_wall_contacts(pairs);
@@ -153,37 +153,17 @@ void ContactNetworkCheck::sum_pair_contacts(const Pairs &pairs)
   }
 }
 
-// The films and drag of the solve taken at this step (if any, alike on every rank: the solve is
-// collective): each pair film's normal damping by pair, and every atom's film sums (its pair and
-// wall films and its drag, summed on the owners and sent to the ghosts).
-void ContactNetworkCheck::sum_solved_films(const Pairs &pairs)
+// The normal damping of the pair films the solve took at this step, by pair (either order).
+void ContactNetworkCheck::find_solved_films(const Pairs &pairs)
 {
-  constexpr int nf = lub::network_film_values;
-  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost, newton_pair = force->newton_pair;
-  const double dt = update->dt;
+  const long long nall = atom->nlocal + atom->nghost;
   solved_damping.clear();
-  films = pairs.solved.count > 0 || pairs.solved.drag;
-  int any = films, anywhere = 0;
-  MPI_Allreduce(&any, &anywhere, 1, MPI_INT, MPI_MAX, world);
-  films = anywhere;
-  if (!films) return;
-  if (static_cast<int>(film_sums.size()) < nf * nall) film_sums.resize(nf * atom->nmax);
-  std::fill(film_sums.begin(), film_sums.begin() + nf * nall, 0.0);
   for (int k = 0; k < pairs.solved.count; k++) {
     const lub::FilmLink &link = pairs.solved.links[k];
-    const double n[3] = {link.normal.x, link.normal.y, link.normal.z};
-    lub::add_network_film(&film_sums[nf * link.i], dt * link.normal_damping, dt * link.shear_damping, n);
-    if (link.j < 0) continue;
-    if (newton_pair || link.j < nlocal)
-      lub::add_network_film(&film_sums[nf * link.j], dt * link.normal_damping, dt * link.shear_damping, n);
-    solved_damping[static_cast<long long>(link.i) * nall + link.j] = link.normal_damping;
-    solved_damping[static_cast<long long>(link.j) * nall + link.i] = link.normal_damping;
+    if (link.j < 0 || !(link.normal_damping > 0.0)) continue;
+    solved_damping[link.i * nall + link.j] = link.normal_damping;
+    solved_damping[link.j * nall + link.i] = link.normal_damping;
   }
-  if (newton_pair) exchange.reverse(film_sums.data(), nf);
-  if (pairs.solved.drag)
-    for (int i = 0; i < nlocal; i++)
-      film_sums[nf * i + 6] += dt * pairs.solved.drag[i];
-  exchange.forward(film_sums.data(), nf);
 }
 
 // The normal damping of pair (i, j)'s film in this step's solve (0: not solved).
@@ -228,16 +208,14 @@ void ContactNetworkCheck::score_and_report(const Pairs &pairs)
   constexpr int nv = lub::network_values;
   const int *type = atom->type;
   lub::NetworkScores scores(comm->me);
-  const double no_sums[nv] = {}, no_films[lub::network_film_values] = {};
+  const double no_sums[nv] = {};
   const int npairs = static_cast<int>(network_i.size());
   for (std::size_t k = 0; k < wall_contacts.size(); k++) {
     const WallContact &c = wall_contacts[k];
     const double *si = &sums[nv * c.i];
     const double m = mass(pairs, c.i);
-    double lower = lub::network_lower_quotient(wall_load[c.wall], m, c.n, si, m, no_sums, INFINITY);
-    // The wall's own film, if solved, is among the atom's (no second sphere).
-    if (films) lower -= 2.0 * lub::network_film_projection(0.0, m, c.n, film_sums_of(c.i), m, no_films, INFINITY);
-    scores.add(npairs + static_cast<int>(k), lower,
+    scores.add(npairs + static_cast<int>(k),
+               lub::network_lower_quotient(wall_load[c.wall], m, c.n, si, m, no_sums, INFINITY),
                lub::network_upper_row(wall_bound[c.wall], m, si, m, no_sums, INFINITY), wall_bound[c.wall]);
   }
   for (int k = 0; k < npairs; k++) {
@@ -248,10 +226,9 @@ void ContactNetworkCheck::score_and_report(const Pairs &pairs)
       n[d] /= r;
     const double m_e = pair_mass(pairs, i, j), mi = mass(pairs, i), mj = mass(pairs, j);
     const double *si = &sums[nv * i], *sj = &sums[nv * j];
-    double lower = lub::network_lower_quotient(load[t], m_e, n, si, mi, sj, mj);
-    if (films)
-      lower -= 2.0 * lub::network_film_projection(update->dt * own_film(i, j), m_e, n, film_sums_of(i), mi,
-                                                  film_sums_of(j), mj);
+    // The lower bound less the contact's own solved film, 2 a_k (contact_network.h).
+    const double lower =
+        lub::network_lower_quotient(load[t], m_e, n, si, mi, sj, mj) - 2.0 * update->dt * own_film(i, j) / m_e;
     // Per unit of the type pair's load (the advice of the message), the films' relief counted.
     scores.add(k, lower, lub::network_upper_row(network_bound[k], m_e, si, mi, sj, mj), bound[t]);
   }
@@ -297,7 +274,6 @@ void ContactNetworkCheck::describe(int k, int *types, long long *tags, double *c
 double ContactNetworkCheck::memory_usage() const
 {
   return (network_i.capacity() + network_j.capacity()) * sizeof(int) +
-         (load.capacity() + bound.capacity() + sums.capacity() + network_bound.capacity() + film_sums.capacity()) *
-             sizeof(double) +
+         (load.capacity() + bound.capacity() + sums.capacity() + network_bound.capacity()) * sizeof(double) +
          solved_damping.size() * (sizeof(long long) + sizeof(double) + 2 * sizeof(void *));
 }

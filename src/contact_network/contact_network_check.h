@@ -47,8 +47,8 @@ class ContactNetworkCheck : protected Pointers {
   // What the check reads of the pair style: the candidate pairs of the step (in overlap or
   // not), the inverse contact masses where some atom is immovable (else nullptr), the
   // velocities over the last step under fix nve/sphere/midpoint (else nullptr: v), and the
-  // coefficients per type pair (for the message); what the coupled solve took at this step
-  // (count 0: none), whose films and drag both bounds count (contact_network.h).
+  // coefficients per type pair (for the message); the films the coupled solve took at this step
+  // (count 0: none): a contact whose own film it solved counts with it (contact_network.h).
   struct Pairs {
     const int *i, *j;
     int n;
@@ -72,11 +72,8 @@ class ContactNetworkCheck : protected Pointers {
   std::vector<int> network_i, network_j;                   // this check's sustained pair contacts
   std::vector<double> network_bound;                       // and their bounding loads (relieved by solved films)
   std::unordered_map<long long, double> solved_damping;    // pair (i, j) -> its solved film's c_n
-  std::vector<double> film_sums;                           // per atom (network_film_values each)
-  bool films = false;                                      // this check counts a solve's films
-  void sum_solved_films(const Pairs &pairs);
+  void find_solved_films(const Pairs &pairs);
   double own_film(int i, int j) const;
-  const double *film_sums_of(int i) const { return &film_sums[lubricated::network_film_values * i]; }
   struct Participant {
     ContactNetworkParticipant *contacts;
     class Fix *fix;

@@ -179,7 +179,7 @@ void FilmSolveStep::solve(const Records &records, const double *scale, const Fil
   atoms.owned = nlocal, atoms.total = nall;
   atoms.inverse_mass = inverse_mass.data(), atoms.inverse_inertia = inverse_inertia.data();
   atoms.radius = atom->radius;
-  const bool implicit_drag = drag_solved = add_implicit_drag();
+  const bool implicit_drag = add_implicit_drag();
   if (implicit_drag) atoms.drag = drag.data(), atoms.rotational_drag = rotational_drag.data();
   lub::FilmComm film_comm;
   film_comm.forward = [this](double *data, int width) { exchange.forward(data, width); };
@@ -283,7 +283,6 @@ lub::SolvedFilms FilmSolveStep::solved_at(bigint step) const
   lub::SolvedFilms solved;
   if (last_solve_step != step) return solved;
   solved.links = links.data(), solved.count = static_cast<int>(links.size());
-  if (drag_solved) solved.drag = drag.data();
   return solved;
 }
 

@@ -33,7 +33,7 @@ class FilmSolveStep : protected Pointers {
   void clear_counts() { iterations = 0, solved = 0; }
   int last_iterations() const { return iterations; }
   int last_solved_films() const { return solved; }    // this rank's
-  // What the solve taken at this step took (lubricated::SolvedFilms; nothing where none was).
+  // The films of the solve taken at this step (lubricated::SolvedFilms; none where none was).
   lubricated::SolvedFilms solved_at(bigint step) const;
 
   // The pair loops' records of this step (FilmBudget's): i, j, the film along n, and with shear

@@ -91,12 +91,11 @@ struct FilmSolveOptions {
   bool warm_start = false;    // start from the increment passed in, scaled at best (else from 0)
 };
 
-// What a step's solve took, for the contact-network check (contact_network.h): its links (this
-// process's, also those another process solves) and the drag of its owned atoms (nullptr: none).
+// The films a step's solve took, for the contact-network check (contact_network.h): its links
+// (this process's, also those another process solves).
 struct SolvedFilms {
   const FilmLink *links = nullptr;
   int count = 0;
-  const double *drag = nullptr;
 };
 
 struct FilmSolveResult {

@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 import dense_scenes
+import lammps_run
 import suspension_scene
 
 ROUND_OFF = 1e-12
@@ -443,3 +444,24 @@ def test_midpoint_integrator_is_refused(lmp):
     script = dense_scenes.fcc(1.0, 1e-6, steps=1, limit="implicit")
     lmp(script.replace("fix nve all nve/sphere", "fix nve all nve/sphere/midpoint"), check=False)
     assert "limit implicit is not available with fix nve/sphere/midpoint" in lmp.log
+
+
+@pytest.mark.parametrize("scene", ["preloaded", "compression"])
+def test_contacts_without_their_own_film_still_stop_the_run(lmp, packings, scene):
+    """N_c = 2 under limit implicit where the contacts' own films do not carry the network: the
+    preloaded 1:10 bed at St 1e-3 (overlaps up to a quarter of the smaller radius, beyond the
+    films' release) and the wet compression from 0.46 to 0.70 (mu_f 10 Pa s, friction and shear
+    film). The check stops both with its ERROR before any atom is lost (with the check disabled:
+    `Lost atoms` within 500 and 200 steps; with every film of the two spheres counted in the
+    lower bound, the compression lost atoms after a WARNING)."""
+    if scene == "preloaded":
+        script = dp.energy_scene(with_velocities(lmp, packings["preloaded"]), mu_for(1e-3), dt_for(5e-3), 500,
+                                 every=10, e_d=0.9, contact="ncontact 2", limit="implicit")
+    else:
+        script = dp.compression_scene(str(packings["loose46"]), 10.0, 5e-5, 200, 0.70, contact="ncontact 2")
+        script = script.replace("pair_style lubricated/springdashpot\n", "pair_style lubricated/springdashpot limit implicit\n")
+    assert "limit implicit" in script
+    with pytest.raises(lammps_run.LammpsError) as err:
+        lmp(script)
+    assert "ncontact = 2 is too short a contact for this packing" in str(err.value)
+    assert "Lost atoms" not in err.value.log
