@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 using namespace LAMMPS_NS;
 namespace lub = lubricated;
@@ -171,6 +172,7 @@ bool FilmSolveStep::add_implicit_drag()
 void FilmSolveStep::solve(const Records &records, const double *scale, const FilmBudget::TypeTables &tables,
                           const FilmBudget::StepInputs &step, FilmBudget::Tally *tally)
 {
+  start_from_last_steps();    // before gather_atoms lays the increments out anew
   const int n_solved = collect_links(records, scale, tables);
   gather_atoms(step);
   gather_other_forces(records);
@@ -187,7 +189,6 @@ void FilmSolveStep::solve(const Records &records, const double *scale, const Fil
   film_comm.sum = [this](double *values, int count) {
     MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_DOUBLE, MPI_SUM, world);
   };
-  start_from_last_steps();
   const lub::FilmSolveResult result = solver.solve(atoms, links.data(), n_solved, step.kick_time, velocity.data(),
                                                    other_force.data(), increment.data(), options, film_comm);
   iterations = result.iterations, solved = n_solved;
@@ -208,27 +209,55 @@ void FilmSolveStep::solve(const Records &records, const double *scale, const Fil
   apply_solved_wall_films(atoms);
 }
 
-// Where the last steps were solved in a row and no atom changed its index since (no list build,
-// no set-up), the solve starts from their increments extrapolated (film_solve.h): along a
-// trajectory they change little from step to step, and the iterations fall to a fraction. The
-// preconditioner's blocks are kept along such a chain too, for blocks_kept_steps.
+// Where the last steps were solved in a row (no set-up between), the solve starts from their
+// increments extrapolated (film_solve.h): along a trajectory they change little from step to
+// step, and the iterations fall to a fraction. Across a list build, which may reorder the atoms,
+// each atom's increments follow it by tag. The preconditioner's blocks are kept along such a
+// chain too, for blocks_kept_steps, while no atom changed its index on any rank.
 void FilmSolveStep::start_from_last_steps()
 {
   const int nlocal = atom->nlocal;
   // The same on every rank: the start and the blocks decide which communications the solve makes.
-  int here =
-      neighbor->ago > 0 && !update->setupflag && update->ntimestep == last_solve_step + 1 && nlocal == last_nlocal;
-  int in_a_row = 0;
-  MPI_Allreduce(&here, &in_a_row, 1, MPI_INT, MPI_MIN, world);
-  known_increments = in_a_row ? std::min(known_increments + 1, 2) : 0;
+  const int in_order = neighbor->ago > 0 && nlocal == last_nlocal;
+  int here[2] = {!update->setupflag && update->ntimestep == last_solve_step + 1 && (in_order || atom->tag_enable),
+                 in_order},
+      everywhere[2] = {0, 0};
+  MPI_Allreduce(here, everywhere, 2, MPI_INT, MPI_MIN, world);
+  known_increments = everywhere[0] ? std::min(known_increments + 1, 2) : 0;
+  if (known_increments > 0 && !in_order) carry_increments_by_tag();
   last_solve_step = update->ntimestep, last_nlocal = nlocal;
+  if (atom->tag_enable) last_tags.assign(atom->tag, atom->tag + nlocal);
   const int n = lub::film_dofs * nlocal;
+  increment.resize(std::max<std::size_t>(increment.size(), n));
   if (known_increments == 1) previous_increment.resize(n);
   options.warm_start = lub::film_increment_guess(increment.data(), previous_increment.data(), n, known_increments);
   // The preconditioner's blocks change with the films as slowly: kept along the same chain of
-  // solves, made again every blocks_kept_steps.
-  options.reuse_blocks = known_increments > 0 && update->ntimestep - blocks_step < blocks_kept_steps;
+  // solves with the atoms in their order, made again every blocks_kept_steps.
+  options.reuse_blocks = known_increments > 0 && everywhere[1] && update->ntimestep - blocks_step < blocks_kept_steps;
   if (!options.reuse_blocks) blocks_step = update->ntimestep;
+}
+
+// The last steps' increments of the owned atoms (x_{n-1} in increment, x_{n-2} in
+// previous_increment), laid out in the order of last_tags, put in the atoms' present order; an
+// atom new to this rank starts from 0 (the solver scales the guess at best, film_solve.h).
+void FilmSolveStep::carry_increments_by_tag()
+{
+  constexpr int dofs = lub::film_dofs;
+  const int nlocal = atom->nlocal, old = static_cast<int>(last_tags.size());
+  std::unordered_map<tagint, int> where;
+  where.reserve(old);
+  for (int k = 0; k < old; k++)
+    where.emplace(last_tags[k], k);
+  const bool two = known_increments == 2;
+  std::vector<double> last(dofs * nlocal, 0.0), before(two ? dofs * nlocal : 0, 0.0);
+  for (int i = 0; i < nlocal; i++) {
+    const auto found = where.find(atom->tag[i]);
+    if (found == where.end()) continue;
+    std::copy_n(&increment[dofs * found->second], dofs, &last[dofs * i]);
+    if (two) std::copy_n(&previous_increment[dofs * found->second], dofs, &before[dofs * i]);
+  }
+  increment.swap(last);
+  if (two) previous_increment.swap(before);
 }
 
 // Per link: its force at w' (the solved film) in place of the step-exact film the loops applied,
@@ -292,5 +321,5 @@ double FilmSolveStep::memory_usage() const
          (inverse_mass.capacity() + inverse_inertia.capacity() + velocity.capacity() + other_force.capacity() +
           increment.capacity() + previous_increment.capacity()) *
              sizeof(double) +
-         wall_solved.capacity() * sizeof(lub::FilmLinkForce);
+         wall_solved.capacity() * sizeof(lub::FilmLinkForce) + last_tags.capacity() * sizeof(tagint);
 }

@@ -65,7 +65,9 @@ class FilmSolveStep : protected Pointers {
   bigint last_solve_step = -1, blocks_step = -1;
   static constexpr int blocks_kept_steps = 10;
   int known_increments = 0, last_nlocal = -1;
+  std::vector<tagint> last_tags;    // the owned atoms of the last solve, in its order
   void start_from_last_steps();
+  void carry_increments_by_tag();
   // Solved here first (the pairs', then the walls'), then (newton off) the others' copies.
   std::vector<lubricated::FilmLink> links;
   std::vector<int> link_record;    // each pair link's record
