@@ -3,7 +3,7 @@
     .venv/bin/python bench/suspension_peer_mono.py            # phi 0.40 0.45 0.50, about 20 min
     .venv/bin/python bench/suspension_peer_mono.py --quick    # phi 0.45, squeeze films, 1 min
     .venv/bin/python bench/suspension_peer_mono.py --gtc 2.5e-4 --peer-steps 2e-4 1e-4 \
-        --plugin-nc 4 8 16 --section suspension-peer-mono-stiff                    # stiffer contacts
+        --plugin-nc 1 2 4 8 --section suspension-peer-mono-stiff                   # stiffer contacts
 
 bench/suspension_peer.py shears bidisperse packings (radii a and 1.4 a). There lubricateU/poly's
 film forces are not pairwise (bench/peer_pair_check.py: a lone pair of unequal spheres at the
