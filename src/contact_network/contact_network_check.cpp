@@ -137,14 +137,7 @@ void ContactNetworkCheck::sum_pair_contacts(const Pairs &pairs)
     const int t = type[i] * stride + type[j];
     const double m_e = pair_mass(pairs, i, j);
     if (m_e == 0.0) continue;    // two immovable atoms
-    // The upper bound's load relieved by the contact's own solved film (the tangential spring's,
-    // where it bounds, is not); the lower bound's sums keep the loads (b_k^T S b_k).
-    double s_bound = bound[t];
-    const double own = own_film(i, j);
-    if (own > 0.0) {
-      const double relieved = lub::film_relieved_load(load[t], own, dt, m_e);
-      s_bound = s_bound > load[t] ? std::max(relieved, s_bound) : relieved;
-    }
+    const double s_bound = relieved_bound(load[t], bound[t], own_film(i, j), m_e);
     lub::add_network_contact(&sums[nv * i], load[t], s_bound, m_e, n);
     if (newton_pair || j < nlocal) lub::add_network_contact(&sums[nv * j], load[t], s_bound, m_e, n);
     network_i.push_back(i);
@@ -153,17 +146,44 @@ void ContactNetworkCheck::sum_pair_contacts(const Pairs &pairs)
   }
 }
 
-// The normal damping of the pair films the solve took at this step, by pair (either order).
+// The upper bound's load of a contact relieved by its own solved film of normal damping c (0:
+// none; the tangential spring's load, where it bounds, is not relieved); the lower bound's sums
+// keep the loads (b_k^T S b_k).
+double ContactNetworkCheck::relieved_bound(double load, double bound, double c, double mass) const
+{
+  if (!(c > 0.0)) return bound;
+  const double relieved = lub::film_relieved_load(load, c, update->dt, mass);
+  return bound > load ? std::max(relieved, bound) : relieved;
+}
+
+// The normal damping of the films the solve took at this step: the pairs' by pair (either
+// order), the walls' by atom with their normals (from the wall to the atom).
 void ContactNetworkCheck::find_solved_films(const Pairs &pairs)
 {
   const long long nall = atom->nlocal + atom->nghost;
   solved_damping.clear();
+  solved_wall_films.clear();
   for (int k = 0; k < pairs.solved.count; k++) {
     const lub::FilmLink &link = pairs.solved.links[k];
-    if (link.j < 0 || !(link.normal_damping > 0.0)) continue;
+    if (!(link.normal_damping > 0.0)) continue;
+    if (link.j < 0) {
+      solved_wall_films.emplace(link.i, WallFilm{{link.normal.x, link.normal.y, link.normal.z}, link.normal_damping});
+      continue;
+    }
     solved_damping[link.i * nall + link.j] = link.normal_damping;
     solved_damping[link.j * nall + link.i] = link.normal_damping;
   }
+}
+
+// The normal damping of the solved wall film of owned atom i along the normal n (0: none).
+double ContactNetworkCheck::own_wall_film(int i, const double *n) const
+{
+  const auto range = solved_wall_films.equal_range(i);
+  for (auto film = range.first; film != range.second; ++film) {
+    const double *m = film->second.n;
+    if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] > 1.0 - 1e-6) return film->second.damping;
+  }
+  return 0.0;
 }
 
 // The normal damping of pair (i, j)'s film in this step's solve (0: not solved).
@@ -195,8 +215,10 @@ void ContactNetworkCheck::sum_wall_contacts(const Pairs &pairs)
       const auto found = owned.find(record.tag);
       if (found == owned.end() || !std::isfinite(mass(pairs, found->second))) continue;    // moved on; immovable
       const int i = found->second;
-      lub::add_network_contact(&sums[nv * i], wall_load[w], wall_bound[w], mass(pairs, i), record.n);
-      wall_contacts.push_back({i, static_cast<int>(w), {record.n[0], record.n[1], record.n[2]}});
+      const double m = mass(pairs, i), own = own_wall_film(i, record.n);
+      const double s_bound = relieved_bound(wall_load[w], wall_bound[w], own, m);
+      lub::add_network_contact(&sums[nv * i], wall_load[w], s_bound, m, record.n);
+      wall_contacts.push_back({i, static_cast<int>(w), {record.n[0], record.n[1], record.n[2]}, s_bound, own});
     }
   }
 }
@@ -214,9 +236,11 @@ void ContactNetworkCheck::score_and_report(const Pairs &pairs)
     const WallContact &c = wall_contacts[k];
     const double *si = &sums[nv * c.i];
     const double m = mass(pairs, c.i);
-    scores.add(npairs + static_cast<int>(k),
-               lub::network_lower_quotient(wall_load[c.wall], m, c.n, si, m, no_sums, INFINITY),
-               lub::network_upper_row(wall_bound[c.wall], m, si, m, no_sums, INFINITY), wall_bound[c.wall]);
+    // As for a pair (below), with the wall's own solved film.
+    const double lower =
+        lub::network_lower_quotient(wall_load[c.wall], m, c.n, si, m, no_sums, INFINITY) - 2.0 * update->dt * c.own / m;
+    scores.add(npairs + static_cast<int>(k), lower, lub::network_upper_row(c.bound, m, si, m, no_sums, INFINITY),
+               wall_bound[c.wall]);
   }
   for (int k = 0; k < npairs; k++) {
     const int i = network_i[k], j = network_j[k], t = type[i] * stride + type[j];

@@ -84,7 +84,15 @@ class ContactNetworkCheck : protected Pointers {
   struct WallContact {
     int i, wall;
     double n[3];
+    double bound, own;    // its bounding load (relieved) and its own solved film's damping
   };
+  struct WallFilm {    // a wall's film in the solve: the normal from the wall, the damping
+    double n[3];
+    double damping;
+  };
+  std::unordered_multimap<int, WallFilm> solved_wall_films;    // by owned atom
+  double own_wall_film(int i, const double *n) const;
+  double relieved_bound(double load, double bound, double c, double mass) const;
   std::vector<WallContact> wall_contacts;
   std::vector<double> wall_load, wall_bound;
 

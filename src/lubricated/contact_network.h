@@ -59,7 +59,8 @@
 // other films of its spheres resist its mode too (b_k^T D b_k >= a_k), but a mode that moves
 // those spheres together escapes them, and a bed compressed at N_c = 2 with its films solved lost
 // atoms while the lower bound with every film counted stayed below 4; so the check errs toward
-// stopping a run (exact without films, as before). A wall is a partner of infinite mass (its contact's b_k lies on the
+// stopping a run (exact without films, as before). A wall contact with its wall's film of the
+// sphere in the solve counts alike, m_i in place of m_e. A wall is a partner of infinite mass (its contact's b_k lies on the
 // sphere alone: the terms of the second sphere drop out); the LAMMPS pair style counts the
 // contacts of the plugin's wall fixes so, the LIGGGHTS model not.
 #pragma once

@@ -89,3 +89,34 @@ def test_a_heavy_sphere_on_a_light_one_on_a_floor(lmp, nprocs):
     z1, z2 = lmp(scene(STACK, 8), nprocs=nprocs)["z"]
     assert "contact network" not in lmp.log and "too short" not in lmp.log
     assert 0.0009 < z1 < 0.001 and 0.0049 < z2 < 0.005
+
+
+WET = "viscosity 10.0 activation 0.2"
+
+
+def wet_and_solved(text):
+    """The scene wet (pairs and walls, mu_f 10 Pa s) under limit implicit."""
+    text = text.replace("pair_style lubricated/springdashpot\n", "pair_style lubricated/springdashpot limit implicit\n")
+    text = text.replace("pair_coeff * * 0.9 ncontact 2", f"pair_coeff * * 0.9 ncontact 2 {WET}")
+    text = text.replace("0.9 ncontact 2 zplane", f"0.9 ncontact 2 {WET} zplane").replace("cell ncontact 2", f"cell ncontact 2 {WET}")
+    assert text.count(WET) == 2 and "limit implicit" in text
+    return text
+
+
+@pytest.mark.parametrize("walls", [PLANES, REGION, ""])
+def test_wet_walls_in_the_solve_relieve_their_contacts(lmp, walls):
+    """The two scenes above at N_c = 2, wet, under limit implicit: the walls' films of the sphere
+    over budget are solved with the pairs' and act on the step's end velocity, so each wall
+    contact counts with its relieved load (doc/film_solve.rst, "The contacts' network with the
+    films in the solve"): no ERROR (dry, and before the walls' films were counted: the ERRORs
+    above). The squeezed sphere, started at 0.01 m/s, comes to rest at the middle; the stack
+    settles on the floor."""
+    template = STACK if not walls else SQUEEZE.replace("velocity all set 0 0 0", "velocity all set 0 0 0.01")
+    result = lmp(wet_and_solved(scene(template, 2, walls)))["z"]
+    assert "contact network" not in lmp.log and "too short" not in lmp.log and "(limit implicit)" in lmp.log
+    if walls:
+        z, ke = result
+        assert z == pytest.approx(0.001, abs=1e-9) and ke < 1e-20
+    else:
+        z1, z2 = result
+        assert 0.0009 < z1 < 0.001 and 0.0049 < z2 < 0.005
