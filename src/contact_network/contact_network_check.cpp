@@ -123,6 +123,7 @@ void ContactNetworkCheck::sum_pair_contacts(const Pairs &pairs)
   network_i.clear();
   network_j.clear();
   network_bound.clear();
+  network_relief.clear();
   for (int c = 0; c < pairs.n; c++) {
     const int i = pairs.i[c], j = pairs.j[c];
     double n[3];
@@ -137,12 +138,13 @@ void ContactNetworkCheck::sum_pair_contacts(const Pairs &pairs)
     const int t = type[i] * stride + type[j];
     const double m_e = pair_mass(pairs, i, j);
     if (m_e == 0.0) continue;    // two immovable atoms
-    const double s_bound = relieved_bound(load[t], bound[t], own_film(i, j), m_e);
+    const double own = own_film(i, j), s_bound = relieved_bound(load[t], bound[t], own, m_e);
     lub::add_network_contact(&sums[nv * i], load[t], s_bound, m_e, n);
     if (newton_pair || j < nlocal) lub::add_network_contact(&sums[nv * j], load[t], s_bound, m_e, n);
     network_i.push_back(i);
     network_j.push_back(j);
     network_bound.push_back(s_bound);
+    network_relief.push_back(lub::film_relief(own, dt, m_e));
   }
 }
 
@@ -218,7 +220,11 @@ void ContactNetworkCheck::sum_wall_contacts(const Pairs &pairs)
       const double m = mass(pairs, i), own = own_wall_film(i, record.n);
       const double s_bound = relieved_bound(wall_load[w], wall_bound[w], own, m);
       lub::add_network_contact(&sums[nv * i], wall_load[w], s_bound, m, record.n);
-      wall_contacts.push_back({i, static_cast<int>(w), {record.n[0], record.n[1], record.n[2]}, s_bound, own});
+      wall_contacts.push_back({i,
+                               static_cast<int>(w),
+                               {record.n[0], record.n[1], record.n[2]},
+                               s_bound,
+                               lub::film_relief(own, update->dt, m)});
     }
   }
 }
@@ -237,8 +243,7 @@ void ContactNetworkCheck::score_and_report(const Pairs &pairs)
     const double *si = &sums[nv * c.i];
     const double m = mass(pairs, c.i);
     // As for a pair (below), with the wall's own solved film.
-    const double lower =
-        lub::network_lower_quotient(wall_load[c.wall], m, c.n, si, m, no_sums, INFINITY) - 2.0 * update->dt * c.own / m;
+    const double lower = lub::network_lower_quotient(wall_load[c.wall], m, c.n, si, m, no_sums, INFINITY) - c.relief;
     scores.add(npairs + static_cast<int>(k), lower, lub::network_upper_row(c.bound, m, si, m, no_sums, INFINITY),
                wall_bound[c.wall]);
   }
@@ -251,8 +256,7 @@ void ContactNetworkCheck::score_and_report(const Pairs &pairs)
     const double m_e = pair_mass(pairs, i, j), mi = mass(pairs, i), mj = mass(pairs, j);
     const double *si = &sums[nv * i], *sj = &sums[nv * j];
     // The lower bound less the contact's own solved film, 2 a_k (contact_network.h).
-    const double lower =
-        lub::network_lower_quotient(load[t], m_e, n, si, mi, sj, mj) - 2.0 * update->dt * own_film(i, j) / m_e;
+    const double lower = lub::network_lower_quotient(load[t], m_e, n, si, mi, sj, mj) - network_relief[k];
     // Per unit of the type pair's load (the advice of the message), the films' relief counted.
     scores.add(k, lower, lub::network_upper_row(network_bound[k], m_e, si, mi, sj, mj), bound[t]);
   }
@@ -298,6 +302,8 @@ void ContactNetworkCheck::describe(int k, int *types, long long *tags, double *c
 double ContactNetworkCheck::memory_usage() const
 {
   return (network_i.capacity() + network_j.capacity()) * sizeof(int) +
-         (load.capacity() + bound.capacity() + sums.capacity() + network_bound.capacity()) * sizeof(double) +
-         solved_damping.size() * (sizeof(long long) + sizeof(double) + 2 * sizeof(void *));
+         (load.capacity() + bound.capacity() + sums.capacity() + network_bound.capacity() + network_relief.capacity()) *
+             sizeof(double) +
+         solved_damping.size() * (sizeof(long long) + sizeof(double) + 2 * sizeof(void *)) +
+         solved_wall_films.size() * (sizeof(int) + sizeof(WallFilm) + 2 * sizeof(void *));
 }

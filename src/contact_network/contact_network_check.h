@@ -70,7 +70,7 @@ class ContactNetworkCheck : protected Pointers {
   bigint next = 0;                                         // step of the next check
   std::vector<double> sums;                                // per atom (lubricated::network_values each)
   std::vector<int> network_i, network_j;                   // this check's sustained pair contacts
-  std::vector<double> network_bound;                       // and their bounding loads (relieved by solved films)
+  std::vector<double> network_bound, network_relief;       // and their bounding loads and films' reliefs
   std::unordered_map<long long, double> solved_damping;    // pair (i, j) -> its solved film's c_n
   void find_solved_films(const Pairs &pairs);
   double own_film(int i, int j) const;
@@ -84,7 +84,7 @@ class ContactNetworkCheck : protected Pointers {
   struct WallContact {
     int i, wall;
     double n[3];
-    double bound, own;    // its bounding load (relieved) and its own solved film's damping
+    double bound, relief;    // its bounding load (relieved) and its own solved film's relief 2 a
   };
   struct WallFilm {    // a wall's film in the solve: the normal from the wall, the damping
     double n[3];

@@ -82,7 +82,6 @@ class FilmSolveStep : protected Pointers {
   void apply_solved_wall_films(const lubricated::FilmAtoms &atoms);
   std::vector<double> inverse_mass, inverse_inertia, velocity, other_force, increment;
   ImplicitDragParticipant *drag_fix = nullptr;
-  bool drag_solved = false;                     // the last solve took the drag
   std::vector<double> drag, rotational_drag;    // per owned atom, where drag_fix acts this step
   bool add_implicit_drag();
   int collect_links(const Records &records, const double *scale, const FilmBudget::TypeTables &tables);

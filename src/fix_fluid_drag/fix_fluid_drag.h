@@ -148,6 +148,11 @@ class FixFluidDrag : public Fix, public ImplicitDragParticipant {
   void apply_drag(int i, const Slip &s, const double *solved);
   void apply_with_inertia(int i, const Slip &s, const double *omega, const double *solved);
   double history_force(int i, const Slip &s, double *known);
+  double history_mass(int i, const Slip &s);
+  struct HistoryWeights {
+    const double *window, *tail;
+  };
+  HistoryWeights history_weights(const Slip &s);
   void near_wall_added_mass(int i, const Slip &s, double m_a, double *axis_mass, double *wall_force) const;
   void lift_force(int i, const Slip &s, const double *omega, double *lift) const;
   void apply_rotation(int i, const double *omega, const double *solved);

@@ -94,8 +94,7 @@ FixFluidDrag::LinearDrag FixFluidDrag::linear_drag(int i, const double *v)
   d.drag = s.beta;
   for (int c = 0; c < 3; c++)
     d.fluid_velocity[c] = s.w[c] + v[c];
-  double known[3];
-  if (history) d.solved_mass = history_force(i, s, known);    // the added mass is in the contact mass
+  if (history) d.solved_mass = history_mass(i, s);    // the added mass is in the contact mass
   if (!rotation) return d;
   d.rotational_drag = lub::rotational_drag_coefficient(atom->radius[i], model.viscosity);
   double curl[3];
@@ -208,14 +207,27 @@ void FixFluidDrag::apply_with_inertia(int i, const Slip &s, const double *omega,
 // The history force's known part H and the weight m_h of this step's unknown acceleration.
 double FixFluidDrag::history_force(int i, const Slip &s, double *known)
 {
-  const double dt = update->dt;
-  const double coefficient = lub::basset_coefficient(s.diameter, model.density, model.viscosity);
+  const HistoryWeights w = history_weights(s);
+  return basset.known_force(history_state[i], lub::basset_coefficient(s.diameter, model.density, model.viscosity),
+                            update->dt, known, w.window, w.tail);
+}
+
+// The weight m_h alone, without the history's known part.
+double FixFluidDrag::history_mass(int i, const Slip &s)
+{
+  return basset.current_weight(history_state[i], lub::basset_coefficient(s.diameter, model.density, model.viscosity),
+                               update->dt, history_weights(s).window);
+}
+
+// The kernel's weights of this step (nullptr: Basset's for steps of one length): Basset's for
+// steps of unequal length, or Mei-Adrian's for this step's slip speed.
+FixFluidDrag::HistoryWeights FixFluidDrag::history_weights(const Slip &s)
+{
   const double *window = steps_uniform ? nullptr : step_weight.data();    // steps of unequal length
-  if (!finite_re) return basset.known_force(history_state[i], coefficient, dt, known, window);
-  // Mei-Adrian: the kernel of this step's slip speed
-  mei_adrian.weigh(lub::mei_adrian_rate(s.speed, s.diameter, model.viscosity / model.density), dt,
+  if (!finite_re) return {window, nullptr};
+  mei_adrian.weigh(lub::mei_adrian_rate(s.speed, s.diameter, model.viscosity / model.density), update->dt,
                    steps_uniform ? nullptr : step_bound.data());
-  return basset.known_force(history_state[i], coefficient, dt, known, mei_adrian.window(), mei_adrian.tail());
+  return {mei_adrian.window(), mei_adrian.tail()};
 }
 
 // Near walls the added mass grows, per axis, and its change brings forces of its own

@@ -60,9 +60,9 @@
 // those spheres together escapes them, and a bed compressed at N_c = 2 with its films solved lost
 // atoms while the lower bound with every film counted stayed below 4; so the check errs toward
 // stopping a run (exact without films, as before). A wall contact with its wall's film of the
-// sphere in the solve counts alike, m_i in place of m_e. A wall is a partner of infinite mass (its contact's b_k lies on the
-// sphere alone: the terms of the second sphere drop out); the LAMMPS pair style counts the
-// contacts of the plugin's wall fixes so, the LIGGGHTS model not.
+// sphere in the solve counts alike, m_i in place of m_e. A wall is a partner of infinite mass
+// (its contact's b_k lies on the sphere alone: the terms of the second sphere drop out); the
+// LAMMPS pair style counts the contacts of the plugin's wall fixes so, the LIGGGHTS model not.
 #pragma once
 
 #include <algorithm>
@@ -153,11 +153,17 @@ inline double contact_steps_for_load(double e_n, double e_t, double load)
   return contact_steps_for_load(model, load);
 }
 
-// The load of a contact whose own normal film, of coefficient c [force/velocity], the coupled
-// solve takes implicitly: (s - 2 a)^+, a = c dt / m_e (above).
+// What a contact's own normal film of coefficient c [force/velocity], taken implicitly by the
+// coupled solve, takes off its load: 2 a, a = c dt / m_e (above; m_i for a wall).
+inline double film_relief(double film_damping, double dt, double reduced_mass)
+{
+  return 2.0 * film_damping * dt / reduced_mass;
+}
+
+// The relieved load of such a contact, (s - 2 a)^+, for the upper bound.
 inline double film_relieved_load(double load, double film_damping, double dt, double reduced_mass)
 {
-  return std::max(0.0, load - 2.0 * film_damping * dt / reduced_mass);
+  return std::max(0.0, load - film_relief(film_damping, dt, reduced_mass));
 }
 
 // Per-sphere sums over its sustained contacts: T, the six components of F (xx yy zz xy xz yz)

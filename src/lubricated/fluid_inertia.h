@@ -168,7 +168,13 @@ class BassetHistory {
         sum += (tail ? tail[k] : tail_.weight[k]) * modes[3 * k + d];
       known[d] = coefficient * sum;
     }
-    return 2.0 * coefficient * root * (window ? window[0] : 1.0);
+    return current_weight(s, coefficient, dt, window);
+  }
+
+  // m_h alone (known_force's return), for a solve that moves it with the sphere's mass.
+  double current_weight(const double *s, double coefficient, double dt, const double *window = nullptr) const
+  {
+    return s[0] < 1.5 ? 0.0 : 2.0 * coefficient * std::sqrt(dt) * (window ? window[0] : 1.0);
   }
 
   // This step's wdot = Du/Dt - a, once the acceleration is known.
